@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The one list of Specula's build and run dependencies (Debian 12 packages).
+# Used by the README, .ci/run and both Dockerfiles, so they never disagree.
+#   docker/install-deps.sh           build + runtime + test dependencies
+#   docker/install-deps.sh --runtime only what the built binaries need at run time
+set -euo pipefail
+
+runtime_packages=(
+  libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6   # headless GL: EGL (device/surfaceless) and OSMesa
+  libglfw3 libturbojpeg0 libprotobuf32 libembree3-3  # clients, JPEG, protocol, reference ray tracer
+  ca-certificates
+)
+build_packages=(
+  build-essential cmake ninja-build pkg-config git
+  libglm-dev libegl-dev libgl-dev libosmesa6-dev libglfw3-dev
+  libturbojpeg0-dev libboost-dev libprotobuf-dev protobuf-compiler
+  libembree-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
+  libgtest-dev
+)
+
+packages=("${runtime_packages[@]}")
+if [[ "${1:-}" != "--runtime" ]]; then
+  packages+=("${build_packages[@]}")
+fi
+
+sudo=""
+if [[ "$(id -u)" != 0 ]]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root or install sudo" >&2; exit 1; }
+  sudo="sudo"
+fi
+
+# Skip apt entirely when everything is present: keeps re-runs fast and offline-friendly.
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if (( ${#missing[@]} == 0 )); then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+echo "install-deps: installing ${#missing[@]} packages: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,19 @@
+#include "math/Color.h"
+
+#include <cmath>
+
+namespace specula::math {
+
+float srgbToLinear(float srgb) {
+  return srgb <= 0.04045f ? srgb / 12.92f : std::pow((srgb + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float linear) {
+  return linear <= 0.0031308f ? linear * 12.92f : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+glm::vec3 srgbToLinear(const glm::vec3& srgb) {
+  return {srgbToLinear(srgb.x), srgbToLinear(srgb.y), srgbToLinear(srgb.z)};
+}
+
+}  // namespace specula::math

@@ -1,0 +1,24 @@
+#pragma once
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace specula::scene {
+
+struct Vertex {
+  glm::vec3 position{0.0f};       // object space, metres
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};  // object space, unit length
+  glm::vec2 uv{0.0f};
+};
+
+// An indexed triangle list, counter-clockwise front faces. Shared read-only by every object using it.
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;  // size is a multiple of 3; every index < vertices.size()
+
+  std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+}  // namespace specula::scene

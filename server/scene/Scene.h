@@ -1,0 +1,32 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "math/Camera.h"
+#include "scene/Animation.h"
+#include "scene/Light.h"
+#include "scene/Material.h"
+#include "scene/Mesh.h"
+#include "scene/SceneObject.h"
+
+namespace specula::scene {
+
+// Everything needed to render any frame of a scene: assets, rest pose, animations.
+// Immutable after loading; sessions share it read-only and keep their own clock and overrides.
+struct Scene {
+  std::string name;
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<SceneObject> objects;
+  std::vector<Light> lights;
+  glm::vec3 ambient{0.05f};    // linear RGB added to every lit surface
+  glm::vec3 background{0.0f};  // linear RGB
+  math::Camera camera;         // default camera (rest pose of the camera animation, if any)
+  std::vector<Animation> animations;
+
+  std::size_t vertexCount() const;
+  std::size_t triangleCount() const;
+  std::size_t mirrorCount() const;
+};
+
+}  // namespace specula::scene

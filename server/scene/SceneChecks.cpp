@@ -1,0 +1,115 @@
+#include "scene/SceneChecks.h"
+
+#include <cmath>
+#include <set>
+
+namespace specula::scene {
+
+namespace {
+
+bool finite(float v) { return std::isfinite(v); }
+bool finite(const glm::vec2& v) { return finite(v.x) && finite(v.y); }
+bool finite(const glm::vec3& v) { return finite(v.x) && finite(v.y) && finite(v.z); }
+bool finite(const glm::quat& q) { return finite(q.x) && finite(q.y) && finite(q.z) && finite(q.w); }
+bool finite(const math::Transform& t) { return finite(t.translation) && finite(t.rotation) && finite(t.scale); }
+bool isUnit(const glm::vec3& v) { return finite(v) && std::abs(glm::length(v) - 1.0f) < 1e-3f; }
+bool inUnitRange(const glm::vec3& c) { return finite(c) && glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))); }
+
+std::optional<std::string> meshProblem(const Mesh& mesh) {
+  const std::string where = "mesh '" + mesh.name + "': ";
+  if (mesh.indices.size() % 3 != 0) return where + "index count is not a multiple of 3";
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] >= mesh.vertices.size())
+      return where + "index " + std::to_string(i) + " refers to vertex " + std::to_string(mesh.indices[i]) +
+             " of " + std::to_string(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vertex& v = mesh.vertices[i];
+    if (!finite(v.position) || !finite(v.normal) || !finite(v.uv))
+      return where + "vertex " + std::to_string(i) + " has a non-finite value";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> transformProblem(const math::Transform& t) {
+  if (!finite(t)) return "transform has a non-finite value";
+  if (std::abs(glm::length(t.rotation) - 1.0f) > 1e-3f) return "rotation quaternion is not unit length";
+  if (glm::any(glm::equal(t.scale, glm::vec3(0.0f)))) return "scale has a zero component";
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> sceneProblem(const Scene& scene) {
+  if (scene.vertexCount() > kMaxVerticesPerScene)
+    return "scene has " + std::to_string(scene.vertexCount()) + " vertices, more than the limit of " +
+           std::to_string(kMaxVerticesPerScene);
+  if (scene.triangleCount() > kMaxTrianglesPerScene)
+    return "scene has " + std::to_string(scene.triangleCount()) + " triangles, more than the limit of " +
+           std::to_string(kMaxTrianglesPerScene);
+  for (const Mesh& mesh : scene.meshes)
+    if (auto problem = meshProblem(mesh)) return problem;
+  for (const Material& m : scene.materials) {
+    if (!inUnitRange(m.baseColor)) return "material '" + m.name + "': base colour must be finite and non-negative";
+    if (!(m.reflectivity >= 0.0f && m.reflectivity <= 1.0f))
+      return "material '" + m.name + "': reflectivity must lie in [0, 1]";
+    if (m.checker && (!inUnitRange(m.checker->oddColor) || !(m.checker->cellsPerUnit > 0.0f) ||
+                      !finite(m.checker->cellsPerUnit)))
+      return "material '" + m.name + "': checker needs a finite colour and cellsPerUnit > 0";
+  }
+  std::set<std::string> names;
+  for (const SceneObject& o : scene.objects) {
+    const std::string where = "object '" + o.name + "': ";
+    if (!names.insert(o.name).second) return where + "name is used twice";
+    if (o.mesh >= scene.meshes.size()) return where + "mesh index out of range";
+    if (o.material >= scene.materials.size()) return where + "material index out of range";
+    if (auto problem = transformProblem(o.transform)) return where + *problem;
+    if (o.mirror) {
+      if (o.mirror->closed == o.mirror->closedTwinMesh.has_value())
+        return where + "an open mirror needs a closed twin mesh, and a closed one must not have one";
+      if (o.mirror->closedTwinMesh && *o.mirror->closedTwinMesh >= scene.meshes.size())
+        return where + "closed twin mesh index out of range";
+      if (o.mirror->analytic && (!finite(o.mirror->analytic->center) ||
+                                 !glm::all(glm::greaterThan(o.mirror->analytic->radii, glm::vec3(0.0f))) ||
+                                 !finite(o.mirror->analytic->radii)))
+        return where + "analytic shape needs a finite centre and positive radii";
+    }
+  }
+  for (const Light& l : scene.lights) {
+    if (!inUnitRange(l.color) || !finite(l.intensity) || l.intensity < 0.0f) return "light has a bad colour or intensity";
+    if (l.kind == Light::Kind::Directional ? !isUnit(l.vector) : !finite(l.vector))
+      return "light direction must be a unit vector (position finite)";
+  }
+  if (!inUnitRange(scene.ambient) || !inUnitRange(scene.background)) return "ambient and background must be finite, non-negative";
+  if (auto problem = math::cameraProblem(scene.camera)) return "default " + *problem;
+
+  for (std::size_t a = 0; a < scene.animations.size(); ++a) {
+    const Animation& animation = scene.animations[a];
+    const std::string where = "animation " + std::to_string(a) + ": ";
+    if (animation.object && *animation.object >= scene.objects.size()) return where + "object index out of range";
+    auto keysIncrease = [](const auto& keys) {
+      for (std::size_t i = 0; i < keys.size(); ++i)
+        if (!std::isfinite(keys[i].time) || (i > 0 && !(keys[i].time > keys[i - 1].time))) return false;
+      return !keys.empty();
+    };
+    if (auto* spin = std::get_if<Spin>(&animation.motion)) {
+      if (!animation.object) return where + "spin applies to objects, not the camera";
+      if (!isUnit(spin->axis) || !std::isfinite(spin->degreesPerSecond)) return where + "spin needs a unit axis and a finite rate";
+    } else if (auto* orbit = std::get_if<Orbit>(&animation.motion)) {
+      if (!isUnit(orbit->axis) || !finite(orbit->center) || !std::isfinite(orbit->degreesPerSecond))
+        return where + "orbit needs a finite centre, a unit axis and a finite rate";
+    } else if (auto* path = std::get_if<TransformPath>(&animation.motion)) {
+      if (!animation.object) return where + "a transform path applies to objects; use a camera path for the camera";
+      if (!keysIncrease(path->keys)) return where + "keys must be non-empty with finite, strictly increasing times";
+      for (const TransformKey& key : path->keys)
+        if (auto problem = transformProblem(key.transform)) return where + *problem;
+    } else if (auto* cameraPath = std::get_if<CameraPath>(&animation.motion)) {
+      if (animation.object) return where + "a camera path applies to the camera only";
+      if (!keysIncrease(cameraPath->keys)) return where + "keys must be non-empty with finite, strictly increasing times";
+      for (const CameraKey& key : cameraPath->keys)
+        if (auto problem = math::cameraProblem(key.camera)) return where + *problem;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace specula::scene

@@ -1,0 +1,33 @@
+#pragma once
+// The scene's meshes in GL buffers, uploaded once and drawn by index. One VAO per mesh.
+#include <vector>
+
+#include "gl/GlApi.h"
+#include "gl/GlObject.h"
+#include "scene/Scene.h"
+
+namespace specula::gl {
+
+class GpuMeshes {
+ public:
+  // Vertex attribute locations every pass's vertex shader uses.
+  static constexpr GLuint kPositionLocation = 0, kNormalLocation = 1, kUvLocation = 2;
+
+  GpuMeshes(const GlApi& gl, const std::vector<scene::Mesh>& meshes);
+
+  // Draws all triangles of mesh `index` with the program and state currently bound.
+  void draw(std::size_t index) const;
+  std::size_t size() const { return meshes_.size(); }
+
+ private:
+  struct Entry {
+    GlVertexArray vertexArray;
+    GlBuffer vertices;
+    GlBuffer indices;
+    GLsizei indexCount;
+  };
+  const GlApi* gl_;
+  std::vector<Entry> meshes_;
+};
+
+}  // namespace specula::gl

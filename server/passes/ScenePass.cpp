@@ -1,0 +1,47 @@
+#include "passes/ScenePass.h"
+
+#include <array>
+
+#include "math/Transform.h"
+#include "passes/ShadingUniforms.h"
+
+namespace specula::passes {
+
+namespace {
+constexpr std::array<std::string_view, 2> kWrites{"color", "depth"};
+}
+
+Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
+  auto program = gl::ShaderProgram::build(gl, {"scene/scene.vert", "scene/scene.frag"});
+  if (!program) return Error{program.error()};
+  return std::unique_ptr<ScenePass>(new ScenePass(std::move(program.value())));
+}
+
+std::span<const std::string_view> ScenePass::writes() const { return kWrites; }
+
+void ScenePass::execute(const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  frame.target.bind();
+  gl.Enable(GL_FRAMEBUFFER_SRGB);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+  gl.Disable(GL_CULL_FACE);  // open meshes (floors, leaves) are seen from both sides
+  gl.ClearColor(frame.scene.background.x, frame.scene.background.y, frame.scene.background.z, 1.0f);
+  gl.ClearDepth(1.0);
+  gl.ClearStencil(0);
+  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+  program_.use();
+  program_.set("worldToClip", frame.worldToClip);
+  program_.set("eyePosition", frame.pose.camera.eye);
+  setSceneLighting(program_, frame.scene);
+  for (std::size_t i = 0; i < frame.scene.objects.size(); ++i) {
+    const scene::SceneObject& object = frame.scene.objects[i];
+    program_.set("objectToWorld", frame.pose.objectToWorld[i]);
+    program_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
+    setMaterial(program_, frame.scene.materials[object.material]);
+    frame.meshes.draw(object.mesh);
+  }
+}
+
+}  // namespace specula::passes

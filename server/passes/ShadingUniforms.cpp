@@ -1,0 +1,35 @@
+#include "passes/ShadingUniforms.h"
+
+#include <algorithm>
+#include <string>
+
+namespace specula::passes {
+
+namespace {
+constexpr std::size_t kMaxLights = 8;  // shaders/common/shading.glsl kMaxLights
+}
+
+void setSceneLighting(const gl::ShaderProgram& program, const scene::Scene& scene) {
+  program.set("sceneAmbient", scene.ambient);
+  const std::size_t count = std::min(scene.lights.size(), kMaxLights);
+  program.set("lightCount", static_cast<int>(count));
+  for (std::size_t i = 0; i < count; ++i) {
+    const scene::Light& light = scene.lights[i];
+    const float w = light.kind == scene::Light::Kind::Point ? 1.0f : 0.0f;
+    const std::string index = "[" + std::to_string(i) + "]";
+    program.set(("lightVector" + index).c_str(), glm::vec4(light.vector, w));
+    program.set(("lightColor" + index).c_str(), light.color * light.intensity);
+  }
+}
+
+void setMaterial(const gl::ShaderProgram& program, const scene::Material& material) {
+  program.set("materialBaseColor", material.baseColor);
+  program.set("materialUnlit", material.unlit ? 1 : 0);
+  program.set("materialHasChecker", material.checker ? 1 : 0);
+  if (material.checker) {
+    program.set("materialCheckerOddColor", material.checker->oddColor);
+    program.set("materialCheckerCellsPerUnit", material.checker->cellsPerUnit);
+  }
+}
+
+}  // namespace specula::passes

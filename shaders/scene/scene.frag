@@ -1,0 +1,14 @@
+#version 430 core
+#include "common/shading.glsl"
+
+in vec3 worldPosition;
+in vec3 worldNormal;
+in vec2 surfaceUv;
+
+uniform vec3 eyePosition;
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+  outColor = vec4(shadeSurface(worldPosition, worldNormal, surfaceUv, eyePosition), 1.0);
+}

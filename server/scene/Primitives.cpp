@@ -1,5 +1,6 @@
 #include "scene/Primitives.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -88,7 +89,8 @@ Mesh uvSphere(std::string name, float radius, int slices, int stacks) {
   std::vector<Ring> rings;
   for (int j = 0; j <= stacks; ++j) {
     const float theta = glm::pi<float>() * static_cast<float>(j) / static_cast<float>(stacks);  // from the south pole
-    const glm::vec2 n{j == 0 || j == stacks ? 0.0f : std::sin(theta), -std::cos(theta)};  // exactly on the axis at the poles
+    // Exactly on the axis at the poles, so the pole triangles collapse cleanly and are left out.
+    const glm::vec2 n{j == 0 || j == stacks ? 0.0f : std::sin(theta), -std::cos(theta)};
     rings.push_back({radius * n.x, radius * n.y, n, static_cast<float>(j) / static_cast<float>(stacks)});
   }
   return sweep(std::move(name), rings, slices);
@@ -140,13 +142,18 @@ Mesh torus(std::string name, float majorRadius, float minorRadius, int majorSegm
 }
 
 Mesh lathe(std::string name, std::span<const glm::vec2> profile, int slices) {
-  // Points repeated back to back carry no direction; drop them so every segment has a tangent.
+  // Rounding leaves arcs a hair off the axis or off their neighbours: snap radii within a tolerance
+  // onto the axis (so poles close without slivers) and drop points repeated within it (no tangent).
+  float extent = 0.0f;
+  for (const glm::vec2& p : profile) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+  const float tolerance = 1e-5f * extent;
   std::vector<glm::vec2> points;
-  for (const glm::vec2& p : profile) {
-    assert(p.x >= 0.0f);
-    if (points.empty() || p != points.back()) points.push_back(p);
+  for (glm::vec2 p : profile) {
+    assert(p.x >= -tolerance);
+    if (p.x < tolerance) p.x = 0.0f;
+    if (points.empty() || glm::distance(p, points.back()) > tolerance) points.push_back(p);
   }
-  assert(points.size() >= 2);
+  if (points.size() < 2) return Mesh{std::move(name), {}, {}};  // a profile without length sweeps no surface
   std::vector<float> arc{0.0f};
   for (std::size_t k = 1; k < points.size(); ++k) arc.push_back(arc.back() + glm::distance(points[k - 1], points[k]));
 
@@ -177,7 +184,8 @@ void append(Mesh& into, const Mesh& part, const glm::mat4& transform) {
   const auto base = static_cast<std::uint32_t>(into.vertices.size());
   into.vertices.reserve(into.vertices.size() + part.vertices.size());
   for (const Vertex& v : part.vertices)
-    into.vertices.push_back({glm::vec3(transform * glm::vec4(v.position, 1.0f)), glm::normalize(normalTransform * v.normal), v.uv});
+    into.vertices.push_back(
+        {glm::vec3(transform * glm::vec4(v.position, 1.0f)), glm::normalize(normalTransform * v.normal), v.uv});
   // A mirroring transform turns every triangle over; swapping two corners keeps the front faces outside.
   const bool flips = glm::determinant(glm::mat3(transform)) < 0.0f;
   into.indices.reserve(into.indices.size() + part.indices.size());

@@ -8,7 +8,7 @@
 
 #include "scene/Mesh.h"
 
-namespace specula::scene::testing {
+namespace specula::scene::topology {
 
 // Area-weighted normal of triangle t from its winding (counter-clockwise = front).
 inline glm::vec3 windingNormal(const Mesh& mesh, std::size_t t) {
@@ -22,7 +22,8 @@ inline glm::vec3 windingNormal(const Mesh& mesh, std::size_t t) {
 inline std::size_t trianglesFacingAgainstNormals(const Mesh& mesh) {
   std::size_t against = 0;
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const glm::vec3 shading = mesh.vertices[mesh.indices[3 * t]].normal + mesh.vertices[mesh.indices[3 * t + 1]].normal +
+    const glm::vec3 shading = mesh.vertices[mesh.indices[3 * t]].normal +
+                              mesh.vertices[mesh.indices[3 * t + 1]].normal +
                               mesh.vertices[mesh.indices[3 * t + 2]].normal;
     against += glm::dot(windingNormal(mesh, t), shading) <= 0.0f;
   }
@@ -49,4 +50,4 @@ inline bool isWatertight(const Mesh& mesh) {
   return !edges.empty();
 }
 
-}  // namespace specula::scene::testing
+}  // namespace specula::scene::topology

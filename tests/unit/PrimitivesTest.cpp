@@ -1,16 +1,15 @@
-#include "scene/Primitives.h"
-
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
 #include "MeshTopology.h"
+#include "scene/Primitives.h"
 
 using namespace specula::scene;
-using specula::scene::testing::isWatertight;
-using specula::scene::testing::trianglesFacingAgainstNormals;
-using specula::scene::testing::windingNormal;
+using specula::scene::topology::isWatertight;
+using specula::scene::topology::trianglesFacingAgainstNormals;
+using specula::scene::topology::windingNormal;
 
 namespace {
 
@@ -69,8 +68,10 @@ TEST(Primitives, UvSphereVerticesLieOnTheSphereWithOutwardUnitNormals) {
     EXPECT_LE(v.uv.y, 1.0f);
   }
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const glm::vec3 centroid = (mesh.vertices[mesh.indices[3 * t]].position + mesh.vertices[mesh.indices[3 * t + 1]].position +
-                                mesh.vertices[mesh.indices[3 * t + 2]].position) / 3.0f;
+    const glm::vec3 centroid =
+        (mesh.vertices[mesh.indices[3 * t]].position + mesh.vertices[mesh.indices[3 * t + 1]].position +
+         mesh.vertices[mesh.indices[3 * t + 2]].position) /
+        3.0f;
     EXPECT_GT(glm::dot(windingNormal(mesh, t), centroid), 0.0f) << "triangle " << t;
   }
 }
@@ -183,7 +184,8 @@ TEST(Primitives, LatheUvRunsAlongSlicesAndArcLength) {
 
 TEST(Primitives, LatheOfAProfileClosedOnTheAxisIsWatertight) {
   // A capsule-ish solid: from the bottom pole out, up, and back to the top pole.
-  const std::vector<glm::vec2> profile{{0.0f, 0.0f}, {0.6f, 0.1f}, {0.8f, 0.5f}, {0.8f, 1.5f}, {0.5f, 1.9f}, {0.0f, 2.0f}};
+  const std::vector<glm::vec2> profile{{0.0f, 0.0f}, {0.6f, 0.1f}, {0.8f, 0.5f},
+                                       {0.8f, 1.5f}, {0.5f, 1.9f}, {0.0f, 2.0f}};
   const Mesh mesh = primitives::lathe("l", profile, 12);
   EXPECT_TRUE(isWatertight(mesh));
   EXPECT_EQ(trianglesFacingAgainstNormals(mesh), 0u);
@@ -193,6 +195,13 @@ TEST(Primitives, LatheIgnoresRepeatedProfilePoints) {
   const std::vector<glm::vec2> once{{1.0f, 0.0f}, {1.0f, 1.0f}};
   const std::vector<glm::vec2> twice{{1.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}};
   EXPECT_EQ(primitives::lathe("a", twice, 6).vertices.size(), primitives::lathe("b", once, 6).vertices.size());
+}
+
+TEST(Primitives, LatheOfAProfileWithoutLengthIsEmpty) {
+  const std::vector<glm::vec2> point{{1.0f, 2.0f}, {1.0f, 2.0f}};
+  const Mesh mesh = primitives::lathe("l", point, 6);
+  EXPECT_TRUE(mesh.vertices.empty());
+  EXPECT_TRUE(mesh.indices.empty());
 }
 
 TEST(Primitives, AppendTransformsPositionsAndNormalsAndOffsetsIndices) {
@@ -206,7 +215,8 @@ TEST(Primitives, AppendTransformsPositionsAndNormalsAndOffsetsIndices) {
   ASSERT_EQ(into.triangleCount(), 12u + 2u);
   for (std::size_t i = 0; i < part.vertices.size(); ++i) {
     const Vertex& v = into.vertices[24 + i];
-    EXPECT_NEAR(glm::distance(v.position, glm::vec3(transform * glm::vec4(part.vertices[i].position, 1.0f))), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(v.position, glm::vec3(transform * glm::vec4(part.vertices[i].position, 1.0f))), 0.0f,
+                1e-5f);
     EXPECT_NEAR(glm::distance(v.normal, glm::vec3(0, 0, 1)), 0.0f, 1e-5f);  // +y turned a quarter about +x
     EXPECT_EQ(v.uv, part.vertices[i].uv);
   }
@@ -216,7 +226,8 @@ TEST(Primitives, AppendTransformsPositionsAndNormalsAndOffsetsIndices) {
 
 TEST(Primitives, AppendWithAMirroringTransformKeepsFrontFacesOutside) {
   Mesh into;
-  primitives::append(into, primitives::uvSphere("s", 1.0f, 8, 4), glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 2.0f, 1.0f)));
+  primitives::append(into, primitives::uvSphere("s", 1.0f, 8, 4),
+                     glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 2.0f, 1.0f)));
   EXPECT_EQ(trianglesFacingAgainstNormals(into), 0u);
   EXPECT_TRUE(isWatertight(into));
 }

@@ -1,0 +1,14 @@
+#pragma once
+// One generator per built-in scene, each in its own file; only BuiltinScenes.cpp calls them.
+#include "scene/Scene.h"
+
+namespace specula::scene::builtin {
+
+Scene checkerSphereScene();
+Scene kitchenScene();
+Scene ufoScene();
+Scene antsScene();
+Scene quadScene();
+Scene teapotTableScene();
+
+}  // namespace specula::scene::builtin

@@ -1,0 +1,28 @@
+// The reference scene: simple enough that exact reflections can be computed analytically.
+#include "scene/Primitives.h"
+#include "scene/builtin/BuiltinSceneGenerators.h"
+#include "scene/builtin/SceneAssembly.h"
+
+namespace specula::scene::builtin {
+
+Scene checkerSphereScene() {
+  Scene scene;
+  scene.ambient = glm::vec3(0.0f);
+  scene.background = glm::vec3(0.0f);
+  scene.camera = {{1.0f, 3.0f, 3.5f}, {0.0f, -0.3f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};
+
+  const std::uint32_t sphere =
+      addSphereMirror(scene, "mirror-sphere", addMesh(scene, primitives::uvSphere("mirror-sphere", 1.0f, 128, 64)),
+                      addMaterial(scene, perfectMirror("mirror")), 1.0f, {});
+  // The only mirror is a convex sphere, which can never show itself.
+  scene.objects[sphere].reflected = false;
+
+  // Translating only in y keeps uv = world (x, z), so checker cells are world-aligned unit squares.
+  addObject(scene, "floor", addMesh(scene, primitives::grid("floor", 16.0f, 16.0f, 16, 16)),
+            addMaterial(scene, checker("floor-checker", 0xE6E6E6, 0x191919, 1.0f, true)), placed({0.0f, -1.0f, 0.0f}));
+
+  scene.animations.push_back({std::nullopt, Orbit{glm::vec3(0.0f), {0.0f, 1.0f, 0.0f}, 20.0}});
+  return scene;
+}
+
+}  // namespace specula::scene::builtin

@@ -1,0 +1,48 @@
+#include "reference/SurfaceShader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace specula::reference {
+
+namespace {
+
+// shading.glsl kMaxLights: lights beyond it are not seen by the rasterizer, so not here either.
+constexpr std::size_t kMaxLights = 8;
+
+glm::vec3 surfaceColor(const scene::Material& material, const glm::vec2& uv) {
+  if (!material.checker) return material.baseColor;
+  const glm::vec2 scaled = uv * material.checker->cellsPerUnit;
+  const auto cellX = static_cast<std::int64_t>(std::floor(scaled.x));
+  const auto cellY = static_cast<std::int64_t>(std::floor(scaled.y));
+  return ((cellX + cellY) & 1) == 0 ? material.baseColor : material.checker->oddColor;
+}
+
+}  // namespace
+
+SurfaceShader::SurfaceShader(const scene::Scene& scene) : ambient_(scene.ambient) {
+  const std::size_t count = std::min(scene.lights.size(), kMaxLights);
+  for (std::size_t i = 0; i < count; ++i) {
+    const scene::Light& light = scene.lights[i];
+    const float w = light.kind == scene::Light::Kind::Point ? 1.0f : 0.0f;
+    lights_.push_back({glm::vec4(light.vector, w), light.color * light.intensity});
+  }
+}
+
+glm::vec3 SurfaceShader::shade(const scene::Material& material, const glm::vec3& position, const glm::vec3& normal,
+                               const glm::vec2& uv, const glm::vec3& viewer) const {
+  const glm::vec3 albedo = surfaceColor(material, uv);
+  if (material.unlit) return albedo;
+  glm::vec3 n = glm::normalize(normal);
+  if (glm::dot(n, viewer - position) < 0.0f) n = -n;
+  glm::vec3 color = ambient_ * albedo;
+  for (const ShaderLight& light : lights_) {
+    const glm::vec3 toLight =
+        light.vector.w == 0.0f ? glm::vec3(light.vector) : glm::normalize(glm::vec3(light.vector) - position);
+    color += albedo * light.color * std::max(glm::dot(n, toLight), 0.0f);
+  }
+  return color;
+}
+
+}  // namespace specula::reference

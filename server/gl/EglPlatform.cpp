@@ -106,7 +106,8 @@ class EglPlatform final : public GlPlatform {
     if (!hasExtension(egl_.QueryString(display_, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
       return Error{"the EGL display lacks EGL_KHR_surfaceless_context"};
     if (!egl_.BindAPI(EGL_OPENGL_API)) return Error{"eglBindAPI(EGL_OPENGL_API) failed: desktop GL not offered"};
-    const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    // SURFACE_TYPE defaults to EGL_WINDOW_BIT, which headless displays lack: ask for no surface at all.
+    const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint configCount = 0;
     if (!egl_.ChooseConfig(display_, configAttributes, &config, 1, &configCount) || configCount < 1)

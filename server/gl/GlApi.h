@@ -37,6 +37,9 @@ namespace specula::gl {
   X(PFNGLBINDTEXTUREPROC, BindTexture)                                                             \
   X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                         \
   X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)                                                           \
+  X(PFNGLTEXSTORAGE3DPROC, TexStorage3D)                                                           \
+  X(PFNGLSCISSORPROC, Scissor)                                                                     \
+  X(PFNGLFRAMEBUFFERTEXTURELAYERPROC, FramebufferTextureLayer)                                     \
   X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                                         \
   X(PFNGLBINDIMAGETEXTUREPROC, BindImageTexture)                                                   \
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                     \
@@ -75,7 +78,9 @@ namespace specula::gl {
   X(PFNGLUSEPROGRAMPROC, UseProgram)                                                               \
   X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                                               \
   X(PFNGLUNIFORM1IPROC, Uniform1i)                                                                 \
+  X(PFNGLUNIFORM1UIPROC, Uniform1ui)                                                               \
   X(PFNGLUNIFORM1FPROC, Uniform1f)                                                                 \
+  X(PFNGLUNIFORM2IPROC, Uniform2i)                                                                 \
   X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                                               \
   X(PFNGLUNIFORM4FVPROC, Uniform4fv)                                                               \
   X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                   \

@@ -18,6 +18,8 @@ class GpuMeshes {
   // Draws all triangles of mesh `index` with the program and state currently bound.
   void draw(std::size_t index) const;
   std::size_t size() const { return meshes_.size(); }
+  // The mesh's vertex buffer (scene::Vertex records), for compute passes that read it as storage.
+  GLuint vertexBuffer(std::size_t index) const { return meshes_.at(index).vertices.id(); }
 
  private:
   struct Entry {

@@ -27,6 +27,8 @@ class ShaderProgram {
 
   // Uniform setters for the program in use; unknown names are ignored, as GL does for location -1.
   void set(const char* name, int value) const;
+  void set(const char* name, unsigned value) const;
+  void set(const char* name, const glm::ivec2& value) const;
   void set(const char* name, float value) const;
   void set(const char* name, const glm::vec3& value) const;
   void set(const char* name, const glm::vec4& value) const;

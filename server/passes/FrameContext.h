@@ -1,22 +1,47 @@
 #pragma once
-// What every pass of one frame sees: the GL context, the scene at this instant, the view, the target.
+// What every pass of one frame sees: the GL context, the scene at this instant, the view, the
+// plan, the target and the reflection state kept between frames.
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "gl/GlApi.h"
 #include "gl/GpuMeshes.h"
 #include "gl/RenderTarget.h"
+#include "math/Bounds.h"
+#include "passes/FramePlan.h"
+#include "passes/ReflectionResources.h"
+#include "passes/ReflectionSettings.h"
 #include "scene/Scene.h"
 #include "scene/ScenePose.h"
 
 namespace specula::passes {
 
+// The eye's view and projection for this frame.
+struct FrameView {
+  glm::mat4 worldToView{1.0f};
+  float fovYDegrees = 45.0f;
+  float aspect = 1.0f;           // width / height
+  float nearDistance = 0.1f, farDistance = 100.0f;
+
+  // worldToClip with the image plane widened by `widen` (1 = the frame itself) and the far plane
+  // moved to farScale × farDistance.
+  glm::mat4 worldToClip(glm::vec2 widen = glm::vec2(1.0f), float farScale = 1.0f) const;
+};
+
 struct FrameContext {
   const gl::GlApi& gl;
   const scene::Scene& scene;
   const scene::ScenePose& pose;
+  const std::vector<math::Bounds>& worldBounds;  // per object, at this pose
   const gl::GpuMeshes& meshes;
-  glm::mat4 worldToClip;  // projection × view for pose.camera and the target's aspect
+  const FrameView& view;
+  const FramePlan& plan;
+  const ReflectionSettings& settings;
   const gl::RenderTarget& target;
+  ReflectionResources& reflections;
+
+  // The object's mesh a mirror search runs on: its closed twin when the mirror is open.
+  std::size_t searchMesh(std::size_t mirrorObject) const;
 };
 
 }  // namespace specula::passes

@@ -1,6 +1,7 @@
 #include "passes/ScenePass.h"
 
 #include <array>
+#include <vector>
 
 #include "math/Transform.h"
 #include "passes/ShadingUniforms.h"
@@ -26,22 +27,36 @@ void ScenePass::execute(const FrameContext& frame) {
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);
   gl.Disable(GL_CULL_FACE);  // open meshes (floors, leaves) are seen from both sides
+  gl.Disable(GL_BLEND);
+  gl.DepthMask(GL_TRUE);
+  gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl.ClearColor(frame.scene.background.x, frame.scene.background.y, frame.scene.background.z, 1.0f);
   gl.ClearDepth(1.0);
   gl.ClearStencil(0);
+  gl.StencilMask(0xFF);
   gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  // Each mirror whose reflection is drawn this frame marks its visible pixels with layer + 1;
+  // everything else writes 0, so objects in front of a mirror cut its stencil.
+  std::vector<int> stencil(frame.scene.objects.size(), 0);
+  for (const MirrorSlots* mirror : frame.plan.mirrors) stencil[mirror->mirrorObject] = mirror->layer + 1;
+  gl.Enable(GL_STENCIL_TEST);
+  gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 
   program_.use();
-  program_.set("worldToClip", frame.worldToClip);
+  program_.set("worldToClip", frame.view.worldToClip());
   program_.set("eyePosition", frame.pose.camera.eye);
   setSceneLighting(program_, frame.scene);
   for (std::size_t i = 0; i < frame.scene.objects.size(); ++i) {
     const scene::SceneObject& object = frame.scene.objects[i];
     program_.set("objectToWorld", frame.pose.objectToWorld[i]);
     program_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
-    setMaterial(program_, frame.scene.materials[object.material]);
+    const scene::Material& material = frame.scene.materials[object.material];
+    setMaterial(program_, material);
+    program_.set("surfaceWeight", stencil[i] != 0 ? 1.0f - material.reflectivity : 1.0f);
+    gl.StencilFunc(GL_ALWAYS, stencil[i], 0xFF);
     frame.meshes.draw(object.mesh);
   }
+  gl.Disable(GL_STENCIL_TEST);
 }
 
 }  // namespace specula::passes

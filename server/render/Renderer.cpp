@@ -1,12 +1,18 @@
 #include "render/Renderer.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 #include "gl/GlObject.h"
 #include "gl/RenderTarget.h"
 #include "math/Camera.h"
+#include "passes/FramePlan.h"
+#include "passes/GBufferPyramidPass.h"
+#include "passes/MirrorGBufferPass.h"
 #include "passes/ScenePass.h"
+#include "passes/SearchPass.h"
+#include "passes/VirtualObjectsPass.h"
 
 namespace specula::render {
 
@@ -22,17 +28,26 @@ double millisecondsSince(Clock::time_point start) {
 // keeps 24-bit depth precise to ~1e-4 of the far distance.
 constexpr float kNearFarRatio = 1.0f / 2000.0f;
 
+template <class P>
+Status addPass(std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>>& passes, Result<std::unique_ptr<P>> pass) {
+  if (!pass) return Error{pass.error()};
+  const std::string_view name = (*pass)->name();
+  passes[name] = std::move(pass.value());
+  return {};
+}
+
 }  // namespace
 
 Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene)
-    : context_(context), scene_(std::move(scene)), meshes_(context.api(), scene_->meshes) {
+    : context_(context),
+      scene_(std::move(scene)),
+      meshes_(context.api(), scene_->meshes),
+      slots_(passes::ReflectionSlots::forScene(*scene_)),
+      reflections_(context.api(), slots_) {
   for (const scene::Mesh& mesh : scene_->meshes) {
-    glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
-    for (const scene::Vertex& v : mesh.vertices) {
-      low = glm::min(low, v.position);
-      high = glm::max(high, v.position);
-    }
-    meshBounds_.emplace_back(low, high);
+    math::Bounds bounds;
+    for (const scene::Vertex& v : mesh.vertices) bounds.add(v.position);
+    meshBounds_.push_back(bounds);
   }
 }
 
@@ -40,62 +55,68 @@ Renderer::~Renderer() = default;
 
 Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene) {
   std::unique_ptr<Renderer> renderer(new Renderer(context, std::move(scene)));
-  auto scenePass = passes::ScenePass::create(context.api());
-  if (!scenePass) return Error{scenePass.error()};
-  renderer->passes_.push_back(std::move(scenePass.value()));
+  const gl::GlApi& gl = context.api();
+  for (Status status : {addPass(renderer->passes_, passes::ScenePass::create(gl)),
+                        addPass(renderer->passes_, passes::MirrorGBufferPass::create(gl)),
+                        addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
+                        addPass(renderer->passes_, passes::SearchPass::create(gl)),
+                        addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl))})
+    if (!status) return Error{status.error()};
   return renderer;
 }
 
-std::pair<float, float> Renderer::clipRange(const scene::ScenePose& pose) const {
-  glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
-  for (std::size_t i = 0; i < scene_->objects.size(); ++i) {
-    const auto& [meshLow, meshHigh] = meshBounds_[scene_->objects[i].mesh];
-    if (meshLow.x > meshHigh.x) continue;  // empty mesh
-    for (int corner = 0; corner < 8; ++corner) {
-      const glm::vec3 local((corner & 1) ? meshHigh.x : meshLow.x, (corner & 2) ? meshHigh.y : meshLow.y,
-                            (corner & 4) ? meshHigh.z : meshLow.z);
-      const glm::vec3 world(pose.objectToWorld[i] * glm::vec4(local, 1.0f));
-      low = glm::min(low, world);
-      high = glm::max(high, world);
-    }
-  }
-  if (low.x > high.x) return {0.1f, 100.0f};  // nothing to draw
-  const glm::vec3 center = 0.5f * (low + high);
-  const float radius = 0.5f * glm::length(high - low);
-  const float distance = glm::length(center - pose.camera.eye);
-  const float farDistance = (distance + radius) * 1.01f;
-  const float nearDistance = std::max(distance - radius, farDistance * kNearFarRatio);
-  return {nearDistance, farDistance};
+passes::FrameView Renderer::frameView(const math::Camera& camera, const std::vector<math::Bounds>& worldBounds,
+                                      float aspect) const {
+  math::Bounds all;
+  for (const math::Bounds& bounds : worldBounds) all.add(bounds);
+  passes::FrameView view{math::viewMatrix(camera), camera.fovYDegrees, aspect, 0.1f, 100.0f};
+  if (all.empty()) return view;
+  const float distance = glm::length(all.center() - camera.eye);
+  view.farDistance = (distance + all.radius()) * 1.01f;
+  view.nearDistance = std::max(distance - all.radius(), view.farDistance * kNearFarRatio);
+  return view;
 }
 
-Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, int height) {
+Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, int height,
+                                       const passes::ReflectionSettings& settings) {
   if (auto problem = math::cameraProblem(pose.camera)) return Error{"cannot render: " + *problem};
+  if (!(settings.gbufferMargin >= 0.0f && settings.gbufferMargin <= 1.0f))
+    return Error{"G-buffer margin must lie in [0, 1]"};
   const Clock::time_point start = Clock::now();
   const gl::GlApi& gl = context_.api();
   auto target = gl::RenderTarget::create(gl, width, height);
   if (!target) return Error{target.error()};
 
-  const auto [nearDistance, farDistance] = clipRange(pose);
+  std::vector<math::Bounds> worldBounds;
+  worldBounds.reserve(scene_->objects.size());
+  for (std::size_t i = 0; i < scene_->objects.size(); ++i)
+    worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const glm::mat4 worldToClip =
-      math::projectionMatrix(pose.camera, aspect, nearDistance, farDistance) * math::viewMatrix(pose.camera);
-  const passes::FrameContext frame{gl, *scene_, pose, meshes_, worldToClip, target.value()};
+  const passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
+  const passes::FramePlan plan = passes::planFrame(slots_, worldBounds, pose.camera, aspect, settings);
+  if (!plan.mirrors.empty()) {
+    const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
+                            static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
+    if (Status status = reflections_.prepare(width, height, margin); !status) return Error{status.error()};
+  }
+  const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, view, plan, settings, target.value(), reflections_};
 
   // Timestamps bracket each stage: stage i runs between stamps i and i + 1.
   std::vector<gl::GlQuery> stamps;
-  for (std::size_t i = 0; i < passes_.size() + 2; ++i) stamps.emplace_back(gl);
+  for (std::size_t i = 0; i < plan.passes.size() + 2; ++i) stamps.emplace_back(gl);
   gl.QueryCounter(stamps[0].id(), GL_TIMESTAMP);
-  for (std::size_t i = 0; i < passes_.size(); ++i) {
-    passes_[i]->execute(frame);
+  for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+    passes_.find(plan.passes[i])->second->execute(frame);
     gl.QueryCounter(stamps[i + 1].id(), GL_TIMESTAMP);
   }
-  RenderedFrame result{width, height, target->readRgba(), {}};
+  RenderedFrame result{width, height, target->readRgba(), {}, plan.mirrors.size(), {}, view};
   gl.QueryCounter(stamps.back().id(), GL_TIMESTAMP);
+  if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
 
   std::vector<GLuint64> times(stamps.size(), 0);
   for (std::size_t i = 0; i < stamps.size(); ++i) gl.GetQueryObjectui64v(stamps[i].id(), GL_QUERY_RESULT, &times[i]);
   for (std::size_t i = 0; i + 1 < stamps.size(); ++i) {
-    const std::string name = i < passes_.size() ? std::string(passes_[i]->name()) : "readback";
+    const std::string name = i < plan.passes.size() ? std::string(plan.passes[i]) : "readback";
     result.timings.stages.push_back({name, static_cast<double>(times[i + 1] - times[i]) * 1e-6});
   }
   if (const GLenum error = gl.GetError(); error != GL_NO_ERROR)

@@ -1,14 +1,22 @@
 #pragma once
-// Runs the passes a scene needs for one view and reads the frame back.
+// Runs the passes a frame needs for one view and reads the frame back.
 // Owns GL resources: create, use and destroy it on the thread where its context is current.
+// Keeps per-view reflection state (last frame's reflection texels), so one Renderer serves one view.
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMeshes.h"
+#include "math/Bounds.h"
+#include "passes/FrameContext.h"
 #include "passes/Pass.h"
+#include "passes/ReflectionResources.h"
+#include "passes/ReflectionSettings.h"
+#include "passes/ReflectionSlots.h"
 #include "render/FrameTimings.h"
 #include "scene/Scene.h"
 #include "scene/ScenePose.h"
@@ -19,6 +27,9 @@ struct RenderedFrame {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // sRGB, tightly packed, row 0 at the top
   FrameTimings timings;
+  std::size_t visibleMirrors = 0;  // mirrors whose reflections were drawn
+  passes::SearchStatistics search;  // zero when no mirror was visible
+  passes::FrameView view;           // the camera matrices used (for measuring in pixels)
 };
 
 class Renderer {
@@ -28,20 +39,28 @@ class Renderer {
   ~Renderer();
 
   // Renders the scene at `pose` (its camera included) into a width × height frame.
-  Result<RenderedFrame> render(const scene::ScenePose& pose, int width, int height);
+  Result<RenderedFrame> render(const scene::ScenePose& pose, int width, int height,
+                               const passes::ReflectionSettings& settings = {});
 
+  // Forgets last frame's reflection texels: the next frame's searches start cold.
+  void resetCoherence() { reflections_.resetCoherence(); }
+  // The last frame's search results, one per slot of reflectionSlots() (a GPU readback).
+  std::vector<passes::ReflectedVertex> readReflectedVertices() const { return reflections_.readReflectedVertices(); }
+  const passes::ReflectionSlots& reflectionSlots() const { return slots_; }
   const scene::Scene& scene() const { return *scene_; }
 
  private:
   Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene);
-  // Near and far distances that enclose the whole posed scene as seen from the pose's camera.
-  std::pair<float, float> clipRange(const scene::ScenePose& pose) const;
+  passes::FrameView frameView(const math::Camera& camera, const std::vector<math::Bounds>& worldBounds,
+                              float aspect) const;
 
   gl::GlContext& context_;
   std::shared_ptr<const scene::Scene> scene_;
   gl::GpuMeshes meshes_;
-  std::vector<std::pair<glm::vec3, glm::vec3>> meshBounds_;  // object-space AABB per mesh
-  std::vector<std::unique_ptr<passes::Pass>> passes_;
+  std::vector<math::Bounds> meshBounds_;  // object space, per mesh
+  passes::ReflectionSlots slots_;
+  passes::ReflectionResources reflections_;
+  std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>> passes_;
 };
 
 }  // namespace specula::render

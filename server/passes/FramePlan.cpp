@@ -1,0 +1,39 @@
+#include "passes/FramePlan.h"
+
+#include <cmath>
+
+namespace specula::passes {
+
+bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, float aspect, float margin) {
+  if (bounds.empty()) return false;
+  // Sphere against the four side planes and the eye plane, in eye space.
+  const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  const glm::vec3 toCenter = bounds.center() - camera.eye;
+  const float radius = bounds.radius();
+  const glm::vec3 local(glm::dot(toCenter, right), glm::dot(toCenter, up), glm::dot(toCenter, forward));
+  if (local.z < -radius) return false;
+  const float tanY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f) * (1.0f + 2.0f * margin);
+  const float tanX = tanY * aspect;
+  // Distance from the centre to a side plane through the eye with slope tan: (|lateral| - tan z) / sqrt(1 + tan²).
+  const auto outside = [&](float lateral, float slope) {
+    return (std::abs(lateral) - slope * local.z) / std::sqrt(1.0f + slope * slope) > radius;
+  };
+  return !outside(local.x, tanX) && !outside(local.y, tanY);
+}
+
+FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds>& worldBounds,
+                    const math::Camera& camera, float aspect, const ReflectionSettings& settings) {
+  FramePlan plan;
+  plan.passes.push_back("scene");
+  if (settings.method == ReflectionMethod::None) return plan;
+  for (const MirrorSlots& mirror : slots.mirrors)
+    if (!mirror.reflected.empty() && boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f))
+      plan.mirrors.push_back(&mirror);
+  if (plan.mirrors.empty()) return plan;
+  plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "gbuffer-pyramid", "search", "virtual-objects"});
+  return plan;
+}
+
+}  // namespace specula::passes

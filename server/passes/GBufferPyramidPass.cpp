@@ -1,0 +1,52 @@
+#include "passes/GBufferPyramidPass.h"
+
+#include <array>
+
+namespace specula::passes {
+
+namespace {
+constexpr std::array<std::string_view, 1> kReads{"mirror-gbuffer"};
+constexpr std::array<std::string_view, 1> kWrites{"gbuffer-pyramid"};
+constexpr int kGroupSide = 8;  // local_size of gbuffer-pyramid.comp
+}  // namespace
+
+Result<std::unique_ptr<GBufferPyramidPass>> GBufferPyramidPass::create(const gl::GlApi& gl) {
+  auto program = gl::ShaderProgram::build(gl, {"gbuffer-pyramid/gbuffer-pyramid.comp"});
+  if (!program) return Error{program.error()};
+  return std::unique_ptr<GBufferPyramidPass>(new GBufferPyramidPass(std::move(program.value())));
+}
+
+std::span<const std::string_view> GBufferPyramidPass::reads() const { return kReads; }
+std::span<const std::string_view> GBufferPyramidPass::writes() const { return kWrites; }
+
+void GBufferPyramidPass::execute(const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  ReflectionResources& resources = frame.reflections;
+  program_.use();
+  gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+    const TexelRect changed = resources.changedRect(mirror->layer);
+    if (changed.empty()) continue;
+    program_.set("layer", mirror->layer);
+    for (int level = 1; level <= resources.coarseLevel(); ++level) {
+      gl.BindImageTexture(0, resources.positionTexture(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+      gl.BindImageTexture(1, resources.normalTexture(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+      gl.BindImageTexture(2, resources.positionTexture(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      gl.BindImageTexture(3, resources.normalTexture(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      const glm::ivec2 coarserSize = resources.levelSize(level);
+      const glm::ivec2 low = glm::clamp(changed.low >> level, glm::ivec2(0), coarserSize);
+      const glm::ivec2 high = glm::clamp(((changed.high - 1) >> level) + 1, glm::ivec2(0), coarserSize);
+      const glm::ivec2 extent = high - low;
+      if (extent.x <= 0 || extent.y <= 0) break;
+      program_.set("origin", low);
+      program_.set("finerSize", resources.levelSize(level - 1));
+      program_.set("coarserSize", coarserSize);
+      gl.DispatchCompute(static_cast<GLuint>((extent.x + kGroupSide - 1) / kGroupSide),
+                         static_cast<GLuint>((extent.y + kGroupSide - 1) / kGroupSide), 1);
+      gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+  }
+  gl.MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+}  // namespace specula::passes

@@ -1,0 +1,26 @@
+#pragma once
+// Builds the G-buffer pyramid of each visible mirror (only the region that changed), which lets a
+// cold-started search go coarse to fine instead of walking hundreds of texels.
+#include <memory>
+
+#include "base/Result.h"
+#include "gl/ShaderProgram.h"
+#include "passes/Pass.h"
+
+namespace specula::passes {
+
+class GBufferPyramidPass final : public Pass {
+ public:
+  static Result<std::unique_ptr<GBufferPyramidPass>> create(const gl::GlApi& gl);
+
+  std::string_view name() const override { return "gbuffer-pyramid"; }
+  std::span<const std::string_view> reads() const override;
+  std::span<const std::string_view> writes() const override;
+  void execute(const FrameContext& frame) override;
+
+ private:
+  explicit GBufferPyramidPass(gl::ShaderProgram program) : program_(std::move(program)) {}
+  gl::ShaderProgram program_;
+};
+
+}  // namespace specula::passes

@@ -1,0 +1,96 @@
+#include "passes/MirrorGBufferPass.h"
+
+#include <array>
+#include <cmath>
+
+#include "math/Transform.h"
+
+namespace specula::passes {
+
+namespace {
+
+constexpr std::array<std::string_view, 1> kWrites{"mirror-gbuffer"};
+constexpr int kRectPadding = 2;  // texels around the projected bounds: rasterization and the 3×3 windows
+
+// The G-buffer texels a world box can cover; everything when the box reaches behind the eye.
+TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip, glm::ivec2 size) {
+  const TexelRect everything{{0, 0}, size};
+  glm::vec2 low(1e30f), high(-1e30f);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec4 clip = worldToClip * glm::vec4((corner & 1) ? bounds.high.x : bounds.low.x,
+                                                   (corner & 2) ? bounds.high.y : bounds.low.y,
+                                                   (corner & 4) ? bounds.high.z : bounds.low.z, 1.0f);
+    if (clip.w <= 1e-6f) return everything;
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    low = glm::min(low, ndc);
+    high = glm::max(high, ndc);
+  }
+  const glm::vec2 texelLow = (low * 0.5f + 0.5f) * glm::vec2(size);
+  const glm::vec2 texelHigh = (high * 0.5f + 0.5f) * glm::vec2(size);
+  TexelRect rect{glm::ivec2(glm::floor(texelLow)) - kRectPadding, glm::ivec2(glm::ceil(texelHigh)) + kRectPadding};
+  rect.low = glm::clamp(rect.low, glm::ivec2(0), size);
+  rect.high = glm::clamp(rect.high, glm::ivec2(0), size);
+  return rect;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::GlApi& gl) {
+  auto program = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer.frag"});
+  if (!program) return Error{program.error()};
+  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(std::move(program.value())));
+}
+
+std::span<const std::string_view> MirrorGBufferPass::writes() const { return kWrites; }
+
+void MirrorGBufferPass::execute(const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  ReflectionResources& resources = frame.reflections;
+  const glm::ivec2 size = resources.size();
+  const glm::vec2 widen = glm::vec2(size) / glm::vec2(frame.target.width(), frame.target.height());
+  const glm::mat4 worldToClip = frame.view.worldToClip(widen);
+
+  gl.BindFramebuffer(GL_FRAMEBUFFER, resources.framebuffer());
+  gl.Viewport(0, 0, size.x, size.y);
+  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  gl.DrawBuffers(2, drawBuffers);
+  gl.Disable(GL_FRAMEBUFFER_SRGB);  // positions and normals are data, not colours
+  gl.Disable(GL_STENCIL_TEST);
+  gl.Disable(GL_BLEND);
+  gl.Disable(GL_CULL_FACE);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+  gl.DepthMask(GL_TRUE);
+  gl.Enable(GL_SCISSOR_TEST);
+  program_.use();
+  program_.set("worldToClip", worldToClip);
+
+  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+    gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.positionTexture(), 0, mirror->layer);
+    gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, resources.normalTexture(), 0, mirror->layer);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, resources.depthTexture(), 0);
+    const TexelRect rect = projectedRect(frame.worldBounds[mirror->mirrorObject], worldToClip, size);
+    const TexelRect changed = rect.united(resources.coveredRect(mirror->layer));
+    resources.coveredRect(mirror->layer) = rect;
+    resources.changedRect(mirror->layer) = changed;
+
+    // Clear what the mirror covered last frame too, so no stale texel survives outside today's cover.
+    const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const GLfloat farDepth = 1.0f;
+    gl.Scissor(changed.low.x, changed.low.y, changed.high.x - changed.low.x, changed.high.y - changed.low.y);
+    gl.ClearBufferfv(GL_COLOR, 0, zero);
+    gl.ClearBufferfv(GL_COLOR, 1, zero);
+    gl.ClearBufferfv(GL_DEPTH, 0, &farDepth);
+    if (rect.empty()) continue;
+    gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
+    const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror->mirrorObject];
+    program_.set("objectToWorld", objectToWorld);
+    program_.set("normalToWorld", math::normalMatrix(objectToWorld));
+    frame.meshes.draw(frame.searchMesh(mirror->mirrorObject));
+  }
+  gl.Disable(GL_SCISSOR_TEST);
+  const GLenum single[] = {GL_COLOR_ATTACHMENT0};
+  gl.DrawBuffers(1, single);
+}
+
+}  // namespace specula::passes

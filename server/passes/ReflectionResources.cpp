@@ -1,0 +1,97 @@
+#include "passes/ReflectionResources.h"
+
+#include <algorithm>
+#include <string>
+
+namespace specula::passes {
+
+TexelRect TexelRect::united(const TexelRect& other) const {
+  if (empty()) return other;
+  if (other.empty()) return *this;
+  return {glm::min(low, other.low), glm::max(high, other.high)};
+}
+
+ReflectionResources::ReflectionResources(const gl::GlApi& gl, const ReflectionSlots& slots)
+    : gl_(&gl), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
+      statistics_(gl) {
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, reflected_.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(slots.slotCount, 1) * sizeof(ReflectedVertex)),
+                nullptr, GL_DYNAMIC_COPY);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  resetCoherence();
+  covered_.resize(slots.mirrors.size());
+  changed_.resize(slots.mirrors.size());
+}
+
+Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 margin) {
+  const glm::ivec2 size(frameWidth + 2 * margin.x, frameHeight + 2 * margin.y);
+  if (size == size_ && margin == margin_) return {};
+  const GLsizei layers = static_cast<GLsizei>(std::max<std::size_t>(slots_.mirrors.size(), 1));
+  GLint maxSize = 0;
+  gl_->GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (size.x > maxSize || size.y > maxSize)
+    return Error{"mirror G-buffer of " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                 " texels exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) + "; lower the size or the margin"};
+  size_ = size;
+  margin_ = margin;
+  coarseLevel_ = 0;
+  while (std::max(levelSize(coarseLevel_).x, levelSize(coarseLevel_).y) > kCoarsestSide) ++coarseLevel_;
+  // Textures are immutable once sized: replace them.
+  position_ = gl::GlTexture(*gl_);
+  normal_ = gl::GlTexture(*gl_);
+  depth_ = gl::GlTexture(*gl_);
+  for (const gl::GlTexture* texture : {&position_, &normal_}) {
+    gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
+    gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, coarseLevel_ + 1, GL_RGBA32F, size.x, size.y, layers);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  gl_->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  gl_->BindTexture(GL_TEXTURE_2D, depth_.id());
+  gl_->TexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+  gl_->BindTexture(GL_TEXTURE_2D, 0);
+  // Every layer starts empty: mark it all covered so the first frame clears it.
+  std::fill(covered_.begin(), covered_.end(), TexelRect{{0, 0}, size});
+  return {};
+}
+
+void ReflectionResources::resetCoherence() {
+  // Unsolved last frame means "no seed": every vertex starts cold.
+  ReflectedVertex unsolved{};
+  unsolved.state.w = ReflectedVertex::kUnsolved;
+  const std::vector<ReflectedVertex> initial(std::max<std::size_t>(slots_.slotCount, 1), unsolved);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, reflected_.id());
+  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(initial.size() * sizeof(ReflectedVertex)),
+                     initial.data());
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+void ReflectionResources::resetStatistics() {
+  const SearchStatistics zero{};
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
+  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof zero, &zero);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+SearchStatistics ReflectionResources::readStatistics() const {
+  SearchStatistics result;
+  gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
+  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof result, &result);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return result;
+}
+
+std::vector<ReflectedVertex> ReflectionResources::readReflectedVertices() const {
+  std::vector<ReflectedVertex> result(slots_.slotCount);
+  gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, reflected_.id());
+  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(result.size() * sizeof(ReflectedVertex)),
+                        result.data());
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return result;
+}
+
+}  // namespace specula::passes

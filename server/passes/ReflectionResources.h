@@ -1,0 +1,67 @@
+#pragma once
+// GPU state the reflection passes share and keep between frames: the mirror G-buffer (one layer
+// per mirror, with its pyramid), the reflected-vertex slots (last frame's texels live there) and
+// the search statistics.
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "base/Result.h"
+#include "gl/GlApi.h"
+#include "gl/GlObject.h"
+#include "passes/ReflectedVertex.h"
+#include "passes/ReflectionSlots.h"
+
+namespace specula::passes {
+
+// A rectangle of G-buffer texels (GL convention: origin bottom-left), half-open.
+struct TexelRect {
+  glm::ivec2 low{0}, high{0};
+  bool empty() const { return high.x <= low.x || high.y <= low.y; }
+  TexelRect united(const TexelRect& other) const;
+};
+
+class ReflectionResources {
+ public:
+  static constexpr int kCoarsestSide = 8;  // the cold start scans a pyramid level at most this big
+
+  ReflectionResources(const gl::GlApi& gl, const ReflectionSlots& slots);
+
+  // Sizes the G-buffer for a width × height frame with `margin` texels added on each side;
+  // reallocates (and forgets every texel) only when the size changes.
+  Status prepare(int frameWidth, int frameHeight, glm::ivec2 margin);
+
+  const ReflectionSlots& slots() const { return slots_; }
+  glm::ivec2 size() const { return size_; }
+  glm::ivec2 margin() const { return margin_; }
+  int coarseLevel() const { return coarseLevel_; }
+  glm::ivec2 levelSize(int level) const { return glm::max(size_ >> level, glm::ivec2(1)); }
+  GLuint positionTexture() const { return position_.id(); }
+  GLuint normalTexture() const { return normal_.id(); }
+  GLuint framebuffer() const { return framebuffer_.id(); }
+  GLuint depthTexture() const { return depth_.id(); }
+  GLuint reflectedVertices() const { return reflected_.id(); }
+  GLuint statistics() const { return statistics_.id(); }
+
+  // The texels a mirror covers now (after the G-buffer pass), and those that changed this frame:
+  // last frame's and this frame's cover together, which the pyramid must rebuild.
+  TexelRect& coveredRect(int layer) { return covered_[static_cast<std::size_t>(layer)]; }
+  TexelRect& changedRect(int layer) { return changed_[static_cast<std::size_t>(layer)]; }
+
+  // Forgets every vertex's last texel, so the next search starts cold (camera jump, new scene).
+  void resetCoherence();
+  void resetStatistics();
+  SearchStatistics readStatistics() const;
+  std::vector<ReflectedVertex> readReflectedVertices() const;
+
+ private:
+  const gl::GlApi* gl_;
+  const ReflectionSlots& slots_;
+  glm::ivec2 size_{0}, margin_{0};
+  int coarseLevel_ = 0;
+  gl::GlTexture position_, normal_, depth_;
+  gl::GlFramebuffer framebuffer_;
+  gl::GlBuffer reflected_, statistics_;
+  std::vector<TexelRect> covered_, changed_;
+};
+
+}  // namespace specula::passes

@@ -1,0 +1,57 @@
+#include "passes/SearchPass.h"
+
+#include <array>
+
+namespace specula::passes {
+
+namespace {
+constexpr std::array<std::string_view, 2> kReads{"mirror-gbuffer", "gbuffer-pyramid"};
+constexpr std::array<std::string_view, 1> kWrites{"reflected-vertices"};
+constexpr GLuint kGroupSize = 64;  // local_size_x of search.comp
+}  // namespace
+
+Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
+  auto program = gl::ShaderProgram::build(gl, {"search/search.comp"});
+  if (!program) return Error{program.error()};
+  return std::unique_ptr<SearchPass>(new SearchPass(std::move(program.value())));
+}
+
+std::span<const std::string_view> SearchPass::reads() const { return kReads; }
+std::span<const std::string_view> SearchPass::writes() const { return kWrites; }
+
+void SearchPass::execute(const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  ReflectionResources& resources = frame.reflections;
+  resources.resetStatistics();
+  program_.use();
+  gl.ActiveTexture(GL_TEXTURE0);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.positionTexture());
+  gl.ActiveTexture(GL_TEXTURE1);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.normalTexture());
+  gl.ActiveTexture(GL_TEXTURE0);
+  program_.set("gbufferPosition", 0);
+  program_.set("gbufferNormal", 1);
+  program_.set("coarseLevel", resources.coarseLevel());
+  program_.set("eyePosition", frame.pose.camera.eye);
+  program_.set("useCoherence", frame.settings.coherence ? 1 : 0);
+  program_.set("maxWalkSteps", frame.settings.maxWalkSteps);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resources.reflectedVertices());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, resources.statistics());
+
+  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+    program_.set("layer", mirror->layer);
+    for (const ReflectionSlotRange& range : mirror->reflected) {
+      const scene::SceneObject& object = frame.scene.objects[range.object];
+      const auto vertexCount = static_cast<GLuint>(frame.scene.meshes[object.mesh].vertices.size());
+      if (vertexCount == 0) continue;
+      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, frame.meshes.vertexBuffer(object.mesh));
+      program_.set("objectToWorld", frame.pose.objectToWorld[range.object]);
+      program_.set("firstSlot", static_cast<unsigned>(range.firstSlot));
+      program_.set("vertexCount", static_cast<unsigned>(vertexCount));
+      gl.DispatchCompute((vertexCount + kGroupSize - 1) / kGroupSize, 1, 1);
+    }
+  }
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+}  // namespace specula::passes

@@ -1,0 +1,25 @@
+#pragma once
+// Finds every reflected vertex's reflection point in each visible mirror (shaders/search).
+#include <memory>
+
+#include "base/Result.h"
+#include "gl/ShaderProgram.h"
+#include "passes/Pass.h"
+
+namespace specula::passes {
+
+class SearchPass final : public Pass {
+ public:
+  static Result<std::unique_ptr<SearchPass>> create(const gl::GlApi& gl);
+
+  std::string_view name() const override { return "search"; }
+  std::span<const std::string_view> reads() const override;
+  std::span<const std::string_view> writes() const override;
+  void execute(const FrameContext& frame) override;
+
+ private:
+  explicit SearchPass(gl::ShaderProgram program) : program_(std::move(program)) {}
+  gl::ShaderProgram program_;
+};
+
+}  // namespace specula::passes

@@ -1,0 +1,33 @@
+#pragma once
+// Rasterizes each visible mirror's virtual objects into the mirror's stencil area, depth-tested
+// among themselves (nearest virtual surface wins), lit at the real objects' positions and added
+// with the mirror's reflectivity over its surface colour.
+#include <memory>
+
+#include "base/Result.h"
+#include "gl/GlObject.h"
+#include "gl/ShaderProgram.h"
+#include "passes/Pass.h"
+
+namespace specula::passes {
+
+class VirtualObjectsPass final : public Pass {
+ public:
+  static Result<std::unique_ptr<VirtualObjectsPass>> create(const gl::GlApi& gl);
+
+  std::string_view name() const override { return "virtual-objects"; }
+  std::span<const std::string_view> reads() const override;
+  std::span<const std::string_view> writes() const override;
+  void execute(const FrameContext& frame) override;
+
+ private:
+  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram region)
+      : objects_(std::move(objects)), region_(std::move(region)), emptyVertexArray_(gl) {}
+  void drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const;
+
+  gl::ShaderProgram objects_;
+  gl::ShaderProgram region_;
+  gl::GlVertexArray emptyVertexArray_;  // the full-screen triangle needs no attributes
+};
+
+}  // namespace specula::passes

@@ -1,0 +1,193 @@
+#version 430 core
+// Reflection-point search (Estalella et al. 2006) for the vertices of one object in one mirror:
+// hill-climb N·B over the mirror's G-buffer in 3×3 windows, from last frame's texel when it is
+// still on the mirror, else coarse-to-fine down the G-buffer pyramid; then refine below the texel.
+layout(local_size_x = 64) in;
+
+#include "common/reflection.glsl"
+#include "common/reflected-vertex-buffer.glsl"
+
+layout(std430, binding = 0) readonly buffer MeshVertices {
+  float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
+};
+
+layout(std430, binding = 2) buffer SearchStatistics {
+  uint searched, hidden, unsolved, coldStarts;
+  uint totalSteps, maxSteps, warmSteps, coldSteps;
+};
+
+uniform sampler2DArray gbufferPosition;  // w > 0 on mirror texels
+uniform sampler2DArray gbufferNormal;
+uniform int layer;
+uniform int coarseLevel;       // pyramid level scanned exhaustively on a cold start
+uniform mat4 objectToWorld;
+uniform vec3 eyePosition;
+uniform uint firstSlot;
+uniform uint vertexCount;
+uniform int useCoherence;      // 0 forces cold starts (first frame, camera jump, benchmarks)
+uniform int maxWalkSteps;
+
+const float kInvalid = -3.0;   // below any N·B
+const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
+                                      ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
+
+vec3 vertexWorld;
+
+float objectiveAt(ivec2 texel, int level) {
+  ivec2 size = textureSize(gbufferPosition, level).xy;
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return kInvalid;
+  vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), level);
+  if (p.w <= 0.0) return kInvalid;
+  return reflectionObjective(p.xyz, texelFetch(gbufferNormal, ivec3(texel, layer), level).xyz, eyePosition,
+                             vertexWorld);
+}
+
+// Moves to the best of the 3×3 window until the centre is best; each window examined is a step.
+ivec2 climb(ivec2 texel, int level, int stepLimit, inout int steps, out float value) {
+  value = objectiveAt(texel, level);
+  for (int i = 0; i < stepLimit; ++i) {
+    ++steps;
+    ivec2 next = texel;
+    float nextValue = value;
+    for (int k = 0; k < 8; ++k) {
+      float candidate = objectiveAt(texel + kNeighbours[k], level);
+      if (candidate > nextValue) {
+        nextValue = candidate;
+        next = texel + kNeighbours[k];
+      }
+    }
+    if (next == texel) break;
+    texel = next;
+    value = nextValue;
+  }
+  return texel;
+}
+
+// Exhaustive scan of the coarse level, then one climb per finer level (children of the winner).
+ivec2 coldSearch(inout int steps, out float value) {
+  ivec2 size = textureSize(gbufferPosition, coarseLevel).xy;
+  ivec2 best = ivec2(0);
+  value = kInvalid;
+  for (int y = 0; y < size.y; ++y) {
+    for (int x = 0; x < size.x; ++x) {
+      float candidate = objectiveAt(ivec2(x, y), coarseLevel);
+      if (candidate > value) {
+        value = candidate;
+        best = ivec2(x, y);
+      }
+    }
+  }
+  steps += (size.x * size.y + 8) / 9;  // counted in 3×3 windows, like climb steps
+  for (int level = coarseLevel - 1; level >= 0; --level) best = climb(best * 2, level, maxWalkSteps, steps, value);
+  return best;
+}
+
+// Bilinear surface between texel centres (texel i's centre at coordinate i); false off the mirror.
+bool surfaceAt(vec2 coordinate, out vec3 position, out vec3 normal) {
+  ivec2 base = ivec2(floor(coordinate));
+  vec2 f = coordinate - vec2(base);
+  vec4 p00 = texelFetch(gbufferPosition, ivec3(base, layer), 0);
+  vec4 p10 = texelFetch(gbufferPosition, ivec3(base + ivec2(1, 0), layer), 0);
+  vec4 p01 = texelFetch(gbufferPosition, ivec3(base + ivec2(0, 1), layer), 0);
+  vec4 p11 = texelFetch(gbufferPosition, ivec3(base + ivec2(1, 1), layer), 0);
+  if (min(min(p00.w, p10.w), min(p01.w, p11.w)) <= 0.0) return false;
+  position = mix(mix(p00.xyz, p10.xyz, f.x), mix(p01.xyz, p11.xyz, f.x), f.y);
+  vec3 n00 = texelFetch(gbufferNormal, ivec3(base, layer), 0).xyz;
+  vec3 n10 = texelFetch(gbufferNormal, ivec3(base + ivec2(1, 0), layer), 0).xyz;
+  vec3 n01 = texelFetch(gbufferNormal, ivec3(base + ivec2(0, 1), layer), 0).xyz;
+  vec3 n11 = texelFetch(gbufferNormal, ivec3(base + ivec2(1, 1), layer), 0).xyz;
+  normal = normalize(mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y));
+  return true;
+}
+
+// Tangential part of the bisector: zero at the reflection point. Unlike 1 − N·B it keeps full
+// float precision near the solution, so it can drive a Gauss–Newton step.
+bool residualAt(vec2 coordinate, out vec3 residual) {
+  vec3 p, n;
+  if (!surfaceAt(coordinate, p, n)) return false;
+  vec3 b = normalize(normalize(eyePosition - p) + normalize(vertexWorld - p));
+  residual = b - dot(b, n) * n;
+  return true;
+}
+
+// Two Gauss–Newton steps on the bilinear surface, staying within 1.5 texels of the climb's winner.
+vec2 refine(ivec2 texel) {
+  vec2 x = vec2(texel);
+  for (int iteration = 0; iteration < 2; ++iteration) {
+    vec3 r0, rxPlus, rxMinus, ryPlus, ryMinus;
+    if (!residualAt(x, r0) || !residualAt(x + vec2(0.5, 0.0), rxPlus) || !residualAt(x - vec2(0.5, 0.0), rxMinus) ||
+        !residualAt(x + vec2(0.0, 0.5), ryPlus) || !residualAt(x - vec2(0.0, 0.5), ryMinus))
+      break;
+    vec3 jx = rxPlus - rxMinus, jy = ryPlus - ryMinus;  // derivatives per texel
+    mat2 normalMatrix = mat2(dot(jx, jx), dot(jx, jy), dot(jx, jy), dot(jy, jy));
+    if (abs(determinant(normalMatrix)) < 1e-30) break;
+    vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));
+    if (length(step) > 1.0) step = normalize(step);
+    vec2 next = clamp(x + step, vec2(texel) - 1.5, vec2(texel) + 1.5);
+    vec3 unused;
+    if (!residualAt(next, unused)) break;
+    x = next;
+  }
+  return x;
+}
+
+void main() {
+  uint index = gl_GlobalInvocationID.x;
+  if (index >= vertexCount) return;
+  uint slot = firstSlot + index;
+  vertexWorld = (objectToWorld * vec4(meshVertex[8u * index], meshVertex[8u * index + 1u],
+                                      meshVertex[8u * index + 2u], 1.0)).xyz;
+
+  int steps = 0, flags = 0;
+  float value = kInvalid;
+  ivec2 texel = reflected[slot].state.xy;
+  bool warm = useCoherence != 0 && (reflected[slot].state.w & kReflectionUnsolved) == 0 &&
+              objectiveAt(texel, 0) > kInvalid;
+  if (warm) texel = climb(texel, 0, maxWalkSteps, steps, value);
+  if (!warm || steps >= maxWalkSteps) {  // no seed, or the seed was too far: start from the pyramid
+    int coldSteps = 0;
+    float coldValue;
+    ivec2 coldTexel = coldSearch(coldSteps, coldValue);
+    steps += coldSteps;
+    flags |= kReflectionColdStart;
+    if (coldValue > value) {
+      texel = coldTexel;
+      value = coldValue;
+    }
+  }
+
+  ReflectedVertex result;
+  vec3 r, n;
+  if (value <= kInvalid || !surfaceAt(refine(texel), r, n)) {
+    vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
+    r = p.xyz;
+    n = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
+    if (value <= kInvalid) flags |= kReflectionUnsolved;
+  }
+  if ((flags & kReflectionUnsolved) != 0) {
+    result.virtualPosition = vec4(0.0);
+  } else {
+    // Behind the tangent plane at the best point: region C (Estalella et al. 2006, §5.1). The search
+    // has climbed to the silhouette, whose tangent plane holds the eye; mirroring across it (not the
+    // paper's eq. 1, which lands inside the silhouette and smears) projects just outside the
+    // silhouette and meets the visible vertices continuously where (V − R)·N = 0.
+    if (dot(vertexWorld - r, n) < 0.0) flags |= kReflectionHidden;
+    result.virtualPosition = vec4(virtualVertex(r, n, vertexWorld), 1.0);
+  }
+  result.reflectionPoint = vec4(r, 1.0);
+  result.reflectionNormal = vec4(n, 0.0);
+  result.state = ivec4(texel, steps, flags);
+  reflected[slot] = result;
+
+  atomicAdd(searched, 1u);
+  atomicAdd(totalSteps, uint(steps));
+  atomicMax(maxSteps, uint(steps));
+  if ((flags & kReflectionHidden) != 0) atomicAdd(hidden, 1u);
+  if ((flags & kReflectionUnsolved) != 0) atomicAdd(unsolved, 1u);
+  if ((flags & kReflectionColdStart) != 0) {
+    atomicAdd(coldStarts, 1u);
+    atomicAdd(coldSteps, uint(steps));
+  } else {
+    atomicAdd(warmSteps, uint(steps));
+  }
+}

@@ -1,0 +1,42 @@
+#version 430 core
+// Keeps a virtual triangle only where it can be a true reflection, so none smears across the mirror:
+// every corner has a reflection point, at least one is not hidden (region C), and the corners'
+// mirror normals are less than 90° apart (corners on far sides of a mirror are different branches).
+#include "common/reflected-vertex.glsl"
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+in VertexData {
+  vec3 worldPosition;
+  vec3 worldNormal;
+  vec2 surfaceUv;
+  vec3 reflectionPoint;
+  vec3 reflectionNormal;
+  flat int flags;
+} inVertex[];
+
+out FragmentData {
+  vec3 worldPosition;
+  vec3 worldNormal;
+  vec2 surfaceUv;
+  vec3 reflectionPoint;
+} outFragment;
+
+void main() {
+  int allFlags = inVertex[0].flags | inVertex[1].flags | inVertex[2].flags;
+  int commonFlags = inVertex[0].flags & inVertex[1].flags & inVertex[2].flags;
+  if ((allFlags & kReflectionUnsolved) != 0 || (commonFlags & kReflectionHidden) != 0) return;
+  if (min(dot(inVertex[0].reflectionNormal, inVertex[1].reflectionNormal),
+          min(dot(inVertex[1].reflectionNormal, inVertex[2].reflectionNormal),
+              dot(inVertex[2].reflectionNormal, inVertex[0].reflectionNormal))) < 0.0)
+    return;
+  for (int i = 0; i < 3; ++i) {
+    outFragment.worldPosition = inVertex[i].worldPosition;
+    outFragment.worldNormal = inVertex[i].worldNormal;
+    outFragment.surfaceUv = inVertex[i].surfaceUv;
+    outFragment.reflectionPoint = inVertex[i].reflectionPoint;
+    gl_Position = gl_in[i].gl_Position;
+    EmitVertex();
+  }
+  EndPrimitive();
+}

@@ -1,0 +1,439 @@
+#include "scene/GltfImporter.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+#include "scene/AssetFiles.h"
+#include "scene/MeshNormals.h"
+#include "scene/Primitives.h"
+#include "scene/SceneChecks.h"
+#include "scene/StrictJson.h"
+
+namespace specula::scene {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+static_assert(std::endian::native == std::endian::little, "GLB and glTF buffers are little-endian");
+
+constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
+constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
+
+std::uint32_t readU32(std::string_view bytes, std::size_t offset) {
+  std::uint32_t value;
+  std::memcpy(&value, bytes.data() + offset, sizeof value);
+  return value;
+}
+
+// The GLB's JSON chunk once the framing checks out; tinygltf 2.7 lets the BIN chunk run 8 bytes past the end.
+Result<std::string_view> glbJsonChunk(std::string_view bytes) {
+  const std::size_t size = bytes.size();
+  if (size < 20) return Error{"truncated GLB: " + std::to_string(size) + " bytes, fewer than the 20-byte header"};
+  if (const std::uint32_t version = readU32(bytes, 4); version != 2)
+    return Error{"GLB container version " + std::to_string(version) + "; only glTF 2.0 is supported"};
+  if (const std::uint32_t length = readU32(bytes, 8); length != size)
+    return Error{"GLB header declares " + std::to_string(length) + " bytes but the file has " + std::to_string(size) +
+                 " (truncated?)"};
+  const std::uint64_t jsonLength = readU32(bytes, 12);
+  if (readU32(bytes, 16) != kChunkJson) return Error{"the first GLB chunk is not the JSON chunk"};
+  const std::uint64_t binStart = 20 + jsonLength;
+  if (binStart > size) return Error{"the GLB JSON chunk runs past the end of the file"};
+  if (binStart < size) {
+    if (binStart + 8 > size) return Error{"the GLB BIN chunk header is truncated"};
+    if (readU32(bytes, binStart + 4) != kChunkBin) return Error{"the second GLB chunk is not the BIN chunk"};
+    if (binStart + 8 + readU32(bytes, binStart) > size) return Error{"the GLB BIN chunk runs past the end of the file"};
+  }
+  return bytes.substr(20, jsonLength);
+}
+
+// tinygltf copies the BIN chunk for every buffer without a URI, so declared sizes, not the file, bound its memory.
+std::optional<std::string> bufferSizeProblem(const nlohmann::json& gltf) {
+  if (!gltf.is_object() || !gltf.contains("buffers") || !gltf["buffers"].is_array()) return std::nullopt;
+  std::uint64_t total = 0;
+  for (std::size_t i = 0; i < gltf["buffers"].size(); ++i) {
+    const nlohmann::json& buffer = gltf["buffers"][i];
+    const std::string where = "buffer " + std::to_string(i) + ": ";
+    if (!buffer.is_object() || !buffer.contains("byteLength") || !buffer["byteLength"].is_number_unsigned())
+      return where + "byteLength must be a positive integer";
+    const std::uint64_t length = buffer["byteLength"].get<std::uint64_t>();
+    if (length > kMaxAssetFileBytes || (total += length) > kMaxAssetFileBytes)
+      return where + "buffers declare more than " + std::to_string(kMaxAssetFileBytes) + " bytes in all";
+  }
+  return std::nullopt;
+}
+
+// What tinygltf's file callbacks may read: files inside the folder, within one budget (URIs may repeat a file).
+struct AssetFolder {
+  fs::path folder;
+  std::size_t bytesLeft = kMaxAssetFileBytes;
+  std::string refusal;  // why a path was refused, to explain tinygltf's "file not found"
+};
+
+bool fileExists(const std::string& path, void* user) {
+  auto& assets = *static_cast<AssetFolder*>(user);
+  Result<fs::path> resolved = resolveInside(assets.folder, path);
+  if (!resolved) {
+    if (assets.refusal.empty()) assets.refusal = resolved.error();  // tinygltf retries with "./" prefixed
+    return false;
+  }
+  std::error_code ec;
+  return fs::exists(resolved.value(), ec);
+}
+
+std::string expandFilePath(const std::string& path, void*) { return path; }
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  auto& assets = *static_cast<AssetFolder*>(user);
+  Result<fs::path> resolved = resolveInside(assets.folder, path);
+  Result<std::string> bytes = resolved ? readBoundedFile(resolved.value(), assets.bytesLeft) : Error{resolved.error()};
+  if (!bytes) {
+    *err = bytes.error();
+    return false;
+  }
+  assets.bytesLeft -= bytes->size();
+  out->assign(bytes->begin(), bytes->end());
+  return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  *err = "the importer never writes files";
+  return false;
+}
+
+// Textures are not rendered, so images are neither decoded nor checked.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+std::size_t componentSize(int componentType) {
+  switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return 2;
+    default:
+      return 4;
+  }
+}
+
+std::string componentTypeName(int componentType) {
+  switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return "FLOAT";
+    default:
+      return std::to_string(componentType);
+  }
+}
+
+std::size_t componentCount(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    default:
+      return 4;
+  }
+}
+
+std::string typeName(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+      return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+      return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+      return "VEC4";
+    default:
+      return "type " + std::to_string(type);
+  }
+}
+
+// An accessor whose every element has been checked to lie inside its buffer view and buffer.
+struct Accessor {
+  std::string name;  // "accessor 3 (NORMAL of primitive 0)", for messages
+  const unsigned char* first = nullptr;
+  std::size_t count = 0;
+  std::size_t stride = 0;
+  int componentType = 0;
+
+  // Component c of element i as a float; integer components count as normalized.
+  float component(std::size_t i, std::size_t c) const {
+    const unsigned char* at = first + i * stride + c * componentSize(componentType);
+    switch (componentType) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return static_cast<float>(at[0]) / 255.0f;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return static_cast<float>(load<std::uint16_t>(at)) / 65535.0f;
+      default:
+        return load<float>(at);
+    }
+  }
+
+  std::uint32_t index(std::size_t i) const {
+    const unsigned char* at = first + i * stride;
+    switch (componentType) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return at[0];
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return load<std::uint16_t>(at);
+      default:
+        return load<std::uint32_t>(at);
+    }
+  }
+
+  template <class T>
+  static T load(const unsigned char* at) {
+    T value;
+    std::memcpy(&value, at, sizeof value);  // glTF only aligns within buffer views, not in memory
+    return value;
+  }
+};
+
+Result<Accessor> checkedAccessor(const tinygltf::Model& model, int index, const std::string& role, int type,
+                                 std::initializer_list<int> componentTypes, std::size_t maxCount) {
+  if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
+    return Error{role + " refers to accessor " + std::to_string(index) + ", but the file has " +
+                 std::to_string(model.accessors.size())};
+  const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
+  Accessor checked;
+  checked.name = "accessor " + std::to_string(index) + " (" + role + ")";
+  const std::string where = checked.name + ": ";
+  if (accessor.sparse.isSparse) return Error{where + "sparse accessors are not supported"};
+  if (accessor.type != type)
+    return Error{where + "has " + typeName(accessor.type) + " elements, expected " + typeName(type)};
+  if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) == componentTypes.end()) {
+    std::string allowed;
+    for (int t : componentTypes) allowed += (allowed.empty() ? "" : ", ") + componentTypeName(t);
+    return Error{where + "component type " + componentTypeName(accessor.componentType) +
+                 " is not allowed here (allowed: " + allowed + ")"};
+  }
+  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && type != TINYGLTF_TYPE_SCALAR && !accessor.normalized)
+    return Error{where + "integer attributes must be normalized (KHR_mesh_quantization is not supported)"};
+  if (accessor.count == 0) return Error{where + "is empty"};
+  if (accessor.count > maxCount)
+    return Error{where + "has " + std::to_string(accessor.count) + " elements, more than the limit of " +
+                 std::to_string(maxCount)};
+  if (accessor.bufferView < 0 || static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size())
+    return Error{where + "refers to buffer view " + std::to_string(accessor.bufferView) + ", but the file has " +
+                 std::to_string(model.bufferViews.size()) + " (accessors without one are not supported)"};
+  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+  const std::string viewName = "buffer view " + std::to_string(accessor.bufferView);
+  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
+    return Error{where + viewName + " refers to buffer " + std::to_string(view.buffer) + ", but the file has " +
+                 std::to_string(model.buffers.size())};
+  const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+  if (view.byteLength > buffer.size() || view.byteOffset > buffer.size() - view.byteLength)
+    return Error{where + viewName + " (" + std::to_string(view.byteLength) + " bytes at offset " +
+                 std::to_string(view.byteOffset) + ") lies outside buffer " + std::to_string(view.buffer) + " (" +
+                 std::to_string(buffer.size()) + " bytes)"};
+  const std::size_t elementSize = componentSize(accessor.componentType) * componentCount(type);
+  checked.stride = view.byteStride != 0 ? view.byteStride : elementSize;
+  if (checked.stride < elementSize)
+    return Error{where + viewName + " has a byte stride of " + std::to_string(checked.stride) + ", less than the " +
+                 std::to_string(elementSize) + "-byte element"};
+  // Written as subtractions and a division so that no hostile count, stride or offset can overflow.
+  if (accessor.byteOffset > view.byteLength || elementSize > view.byteLength - accessor.byteOffset ||
+      accessor.count - 1 > (view.byteLength - accessor.byteOffset - elementSize) / checked.stride)
+    return Error{where + std::to_string(accessor.count) + " elements of " + std::to_string(elementSize) +
+                 " bytes (stride " + std::to_string(checked.stride) + ", offset " +
+                 std::to_string(accessor.byteOffset) + ") overrun " + viewName + " (" +
+                 std::to_string(view.byteLength) + " bytes)"};
+  checked.first = buffer.data() + view.byteOffset + accessor.byteOffset;
+  checked.count = accessor.count;
+  checked.componentType = accessor.componentType;
+  return checked;
+}
+
+std::optional<int> attribute(const tinygltf::Primitive& primitive, const std::string& name) {
+  const auto it = primitive.attributes.find(name);
+  return it == primitive.attributes.end() ? std::nullopt : std::optional<int>(it->second);
+}
+
+Result<Mesh> readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                           const std::string& name) {
+  if (primitive.mode != TINYGLTF_MODE_TRIANGLES)
+    return Error{name + " has mode " + std::to_string(primitive.mode) + "; only triangle lists (mode 4) are supported"};
+  if (!attribute(primitive, "POSITION")) return Error{name + " has no POSITION attribute"};
+  Mesh part;
+  // Reads one attribute, if present, into every vertex through `store`; POSITION comes first and sizes the mesh.
+  const auto readAttribute = [&](const std::string& semantic, int type, std::initializer_list<int> componentTypes,
+                                 const auto& store) -> std::optional<std::string> {
+    const std::optional<int> index = attribute(primitive, semantic);
+    if (!index) return std::nullopt;
+    Result<Accessor> accessor =
+        checkedAccessor(model, *index, semantic + " of " + name, type, componentTypes, kMaxVerticesPerScene);
+    if (!accessor) return accessor.error();
+    if (part.vertices.empty()) part.vertices.resize(accessor->count);
+    if (accessor->count != part.vertices.size())
+      return accessor->name + " has " + std::to_string(accessor->count) + " elements but POSITION has " +
+             std::to_string(part.vertices.size());
+    for (std::size_t i = 0; i < accessor->count; ++i) {
+      glm::vec3 v{0.0f};
+      for (std::size_t c = 0; c < componentCount(type); ++c)
+        v[static_cast<glm::length_t>(c)] = accessor->component(i, c);
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        return accessor->name + ": element " + std::to_string(i) + " is not finite";
+      if (!store(part.vertices[i], v)) return accessor->name + ": element " + std::to_string(i) + " is a zero vector";
+    }
+    return std::nullopt;
+  };
+  const int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  const auto setPosition = [](Vertex& vertex, const glm::vec3& v) {
+    vertex.position = v;
+    return true;
+  };
+  const auto setNormal = [](Vertex& vertex, const glm::vec3& v) {
+    const float length = glm::length(v);
+    if (length > 0.0f) vertex.normal = v / length;
+    return length > 0.0f;
+  };
+  const auto setUv = [](Vertex& vertex, const glm::vec3& v) {
+    vertex.uv = {v.x, v.y};
+    return true;
+  };
+  if (auto problem = readAttribute("POSITION", TINYGLTF_TYPE_VEC3, {kFloat}, setPosition)) return Error{*problem};
+  if (auto problem = readAttribute("NORMAL", TINYGLTF_TYPE_VEC3, {kFloat}, setNormal)) return Error{*problem};
+  if (auto problem =
+          readAttribute("TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                        {kFloat, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, setUv))
+    return Error{*problem};
+
+  if (primitive.indices >= 0) {
+    Result<Accessor> indices =
+        checkedAccessor(model, primitive.indices, "indices of " + name, TINYGLTF_TYPE_SCALAR,
+                        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                        3 * kMaxTrianglesPerScene);
+    if (!indices) return Error{indices.error()};
+    if (indices->count % 3 != 0)
+      return Error{indices->name + " has " + std::to_string(indices->count) + " indices, not a multiple of 3"};
+    part.indices.resize(indices->count);
+    for (std::size_t i = 0; i < indices->count; ++i) {
+      part.indices[i] = indices->index(i);
+      if (part.indices[i] >= part.vertices.size())
+        return Error{indices->name + ": index " + std::to_string(i) + " is " + std::to_string(part.indices[i]) +
+                     ", but POSITION has " + std::to_string(part.vertices.size()) + " vertices"};
+    }
+  } else {
+    if (part.vertices.size() % 3 != 0)
+      return Error{name + " has no indices and " + std::to_string(part.vertices.size()) +
+                   " vertices, not a multiple of 3"};
+    part.indices.resize(part.vertices.size());
+    for (std::size_t i = 0; i < part.indices.size(); ++i) part.indices[i] = static_cast<std::uint32_t>(i);
+  }
+  if (!attribute(primitive, "NORMAL")) {
+    if (part.indices.size() > kMaxVerticesPerScene)
+      return Error{name + " has no normals and needs " + std::to_string(part.indices.size()) +
+                   " vertices once flat-shaded, more than the limit of " + std::to_string(kMaxVerticesPerScene)};
+    makeFlatShaded(part);
+  }
+  return part;
+}
+
+std::string meshList(const tinygltf::Model& model) {
+  std::string list;
+  for (std::size_t i = 0; i < model.meshes.size() && i < 20; ++i)
+    list +=
+        (i ? ", " : "") + std::to_string(i) + (model.meshes[i].name.empty() ? "" : " \"" + model.meshes[i].name + "\"");
+  return model.meshes.size() > 20 ? list + ", ..." : list;
+}
+
+Result<std::size_t> selectMesh(const tinygltf::Model& model, const GltfMeshSelector& which) {
+  if (model.meshes.empty()) return Error{"the file holds no meshes"};
+  if (const auto* index = std::get_if<std::size_t>(&which)) {
+    if (*index < model.meshes.size()) return *index;
+    return Error{"there is no mesh " + std::to_string(*index) + " (meshes: " + meshList(model) + ")"};
+  }
+  if (const auto* name = std::get_if<std::string>(&which)) {
+    for (std::size_t i = 0; i < model.meshes.size(); ++i)
+      if (model.meshes[i].name == *name) return i;
+    return Error{"there is no mesh named \"" + *name + "\" (meshes: " + meshList(model) + ")"};
+  }
+  if (model.meshes.size() == 1) return std::size_t{0};
+  return Error{"the file holds " + std::to_string(model.meshes.size()) + " meshes (" + meshList(model) +
+               "); pick one by index or name"};
+}
+
+Result<Mesh> importFromBytes(std::string_view bytes, const fs::path& folder, const GltfMeshSelector& which,
+                             std::string meshName) {
+  if (bytes.empty()) return Error{"empty file; expected glTF JSON or a GLB container"};
+  const bool binary = bytes.starts_with("glTF");
+  Result<std::string_view> json = binary ? glbJsonChunk(bytes) : Result<std::string_view>(bytes);
+  if (!json) return Error{json.error()};
+  // Parsed strictly first: tinygltf walks "extras" recursively, so nesting depth must be bounded before it runs.
+  Result<nlohmann::json> document = parseStrictJson(json.value());
+  if (!document) return Error{document.error()};
+  if (auto problem = bufferSizeProblem(document.value())) return Error{*problem};
+
+  AssetFolder assets{folder, kMaxAssetFileBytes, {}};
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&skipImage, nullptr);
+  loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &assets});
+  tinygltf::Model model;
+  std::string error, warning;
+  try {
+    // An empty base folder makes tinygltf hand URIs to the callbacks unchanged; they resolve them in `folder`.
+    const auto size = static_cast<unsigned int>(binary ? bytes.size() : json->size());
+    const bool loaded =
+        binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                             reinterpret_cast<const unsigned char*>(bytes.data()), size, "")
+               : loader.LoadASCIIFromString(&model, &error, &warning, json->data(), size, "");
+    if (!loaded)
+      return Error{"not a valid glTF 2.0 asset: " + oneLine(error) +
+                   (assets.refusal.empty() ? "" : " (" + assets.refusal + ")")};
+  } catch (const std::exception& e) {
+    return Error{"cannot be parsed: " + std::string(e.what())};
+  }
+
+  Result<std::size_t> chosen = selectMesh(model, which);
+  if (!chosen) return Error{chosen.error()};
+  const tinygltf::Mesh& source = model.meshes[chosen.value()];
+  Mesh mesh;
+  mesh.name = std::move(meshName);
+  for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+    Result<Mesh> part = readPrimitive(model, source.primitives[p],
+                                      "primitive " + std::to_string(p) + " of mesh " + std::to_string(chosen.value()));
+    if (!part) return Error{part.error()};
+    if (mesh.vertices.size() + part->vertices.size() > kMaxVerticesPerScene)
+      return Error{"mesh " + std::to_string(chosen.value()) + " has more than " + std::to_string(kMaxVerticesPerScene) +
+                   " vertices, the limit per scene"};
+    primitives::append(mesh, part.value(), glm::mat4(1.0f));
+  }
+  if (mesh.indices.empty()) return Error{"mesh " + std::to_string(chosen.value()) + " has no primitives"};
+  return mesh;
+}
+
+}  // namespace
+
+Result<Mesh> importGltf(const fs::path& file, const GltfMeshSelector& which, std::string meshName) {
+  Result<std::string> bytes = readBoundedFile(file, kMaxAssetFileBytes);
+  if (!bytes) return Error{bytes.error()};
+  Result<Mesh> mesh = importFromBytes(bytes.value(), file.parent_path(), which, std::move(meshName));
+  if (!mesh) return Error{file.string() + ": " + mesh.error()};
+  return mesh;
+}
+
+}  // namespace specula::scene

@@ -1,0 +1,426 @@
+#include "scene/SceneLoader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <glm/gtc/quaternion.hpp>
+#include <limits>
+#include <optional>
+
+#include "math/Color.h"
+#include "scene/AssetFiles.h"
+#include "scene/GltfImporter.h"
+#include "scene/JsonNode.h"
+#include "scene/NameIndex.h"
+#include "scene/ObjImporter.h"
+#include "scene/Primitives.h"
+#include "scene/SceneChecks.h"
+#include "scene/StrictJson.h"
+
+namespace specula::scene {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Bounds on lists and tessellation, so no file allocates without limit before the vertex budget applies.
+constexpr std::size_t kMaxEntities = 10000;  // meshes, materials, objects, animations, each
+constexpr std::size_t kMaxLights = 64;
+constexpr std::size_t kMaxKeys = 100000;  // keyframes per path
+constexpr std::size_t kMaxProfilePoints = 1024;
+constexpr std::int64_t kMaxSegments = 1024;  // grid cells per side, slices, stacks, torus segments
+
+// Names of everything a scene file refers to by name.
+struct Names {
+  NameIndex meshes{"mesh"};
+  NameIndex materials{"material"};
+  NameIndex objects{"object"};
+};
+
+// sRGB "#rrggbb" or [r, g, b] in [0, 1], returned as linear RGB.
+glm::vec3 readColor(const JsonNode& node) {
+  glm::vec3 srgb;
+  if (node.isString()) {
+    const std::string& text = node.string();
+    const bool hex = text.size() == 7 && text[0] == '#' && std::all_of(text.begin() + 1, text.end(), [](char c) {
+                       return std::isxdigit(static_cast<unsigned char>(c));
+                     });
+    if (!hex)
+      node.fail(JsonNode::quoted(text) + " is not a colour; use \"#rrggbb\" or [r, g, b] with components in [0, 1]");
+    for (glm::length_t i = 0; i < 3; ++i)
+      srgb[i] =
+          static_cast<float>(std::stoi(text.substr(1 + 2 * static_cast<std::size_t>(i), 2), nullptr, 16)) / 255.0f;
+  } else {
+    if (!node.isArray()) node.fail("expected a colour (\"#rrggbb\" or [r, g, b]), got " + node.typeName());
+    const std::vector<JsonNode> components = node.array(3, 3);
+    for (glm::length_t i = 0; i < 3; ++i)
+      srgb[i] = static_cast<float>(components[static_cast<std::size_t>(i)].inRange(0.0, 1.0));
+  }
+  return math::srgbToLinear(srgb);
+}
+
+// Any non-zero vector, normalized.
+glm::vec3 readDirection(const JsonNode& node) {
+  const glm::dvec3 v{node.vec3()};
+  const double length = glm::length(v);
+  if (!(length > 1e-9)) node.fail("must be a non-zero vector");
+  return glm::vec3(v / length);
+}
+
+glm::vec3 readPositiveVec3(const JsonNode& node) {
+  const glm::vec3 v = node.vec3();
+  if (!glm::all(glm::greaterThan(v, glm::vec3(0.0f)))) node.fail("components must all be greater than 0");
+  return v;
+}
+
+// {"axis": [x, y, z], "degrees": a} or {"quaternion": [x, y, z, w]}; the quaternion is normalized.
+glm::quat readRotation(const JsonNode& node) {
+  node.expectObject({"axis", "degrees", "quaternion"});
+  if (node.oneOf({"axis", "quaternion"}) == "quaternion") {
+    if (const auto degrees = node.find("degrees"))
+      degrees->fail("\"degrees\" goes with \"axis\", not with \"quaternion\"");
+    const JsonNode quaternion = node.at("quaternion");
+    const glm::dvec4 q{quaternion.vec4()};
+    const double length = glm::length(q);
+    if (!(length > 1e-9)) quaternion.fail("must not be zero");
+    return glm::quat(static_cast<float>(q.w / length), static_cast<float>(q.x / length),
+                     static_cast<float>(q.y / length), static_cast<float>(q.z / length));
+  }
+  const float degrees = static_cast<float>(node.at("degrees").number());
+  return glm::angleAxis(glm::radians(degrees), readDirection(node.at("axis")));
+}
+
+// A positive number (uniform) or [x, y, z] of positive numbers; mirrored (negative) scales would flip winding.
+glm::vec3 readScale(const JsonNode& node) {
+  if (node.isNumber()) return glm::vec3(static_cast<float>(node.positive()));
+  return readPositiveVec3(node);
+}
+
+// Applies the "translation", "rotation" and "scale" keys present in `node` to `transform`.
+math::Transform readTransform(const JsonNode& node, math::Transform transform) {
+  if (const auto n = node.find("translation")) transform.translation = n->vec3();
+  if (const auto n = node.find("rotation")) transform.rotation = readRotation(*n);
+  if (const auto n = node.find("scale")) transform.scale = readScale(*n);
+  return transform;
+}
+
+// "eye" and "target" (required), "up" and "fov" (defaulting to `camera`'s); the caller checks the keys.
+math::Camera readCamera(const JsonNode& node, math::Camera camera) {
+  camera.eye = node.at("eye").vec3();
+  camera.target = node.at("target").vec3();
+  if (const auto up = node.find("up")) camera.up = up->vec3();
+  if (const auto fov = node.find("fov")) {
+    const double degrees = fov->number();
+    if (!(degrees > 0.0 && degrees < 180.0))
+      fov->fail("field of view must lie in (0, 180) degrees, got " + JsonNode::numberText(degrees));
+    camera.fovYDegrees = static_cast<float>(degrees);
+  }
+  if (auto problem = math::cameraProblem(camera)) node.fail(*problem);
+  return camera;
+}
+
+Mesh readPrimitive(const JsonNode& node, std::string name) {
+  const JsonNode type = node.at("type");
+  const auto length = [&](std::string_view key) { return static_cast<float>(node.at(key).positive()); };
+  const auto segments = [&](std::string_view key, std::int64_t low, int fallback) {
+    const std::optional<JsonNode> count = node.find(key);
+    return count ? static_cast<int>(count->integer(low, kMaxSegments)) : fallback;
+  };
+  if (type.string() == "grid") {
+    node.expectObject({"type", "size", "cells"});
+    const glm::vec2 size = node.at("size").vec2();
+    if (!(size.x > 0.0f && size.y > 0.0f)) node.at("size").fail("components must both be greater than 0");
+    glm::ivec2 cells{1, 1};
+    if (const auto pair = node.find("cells")) {
+      const std::vector<JsonNode> counts = pair->array(2, 2);
+      cells = {static_cast<int>(counts[0].integer(1, kMaxSegments)),
+               static_cast<int>(counts[1].integer(1, kMaxSegments))};
+    }
+    return primitives::grid(std::move(name), size.x, size.y, cells.x, cells.y);
+  }
+  if (type.string() == "sphere") {
+    node.expectObject({"type", "radius", "slices", "stacks"});
+    const float radius = length("radius");
+    return primitives::uvSphere(std::move(name), radius, segments("slices", 3, 64), segments("stacks", 2, 32));
+  }
+  if (type.string() == "box") {
+    node.expectObject({"type", "size"});
+    return primitives::box(std::move(name), readPositiveVec3(node.at("size")));
+  }
+  if (type.string() == "cylinder") {
+    node.expectObject({"type", "radius", "height", "slices", "capped"});
+    const float radius = length("radius"), height = length("height");
+    const std::optional<JsonNode> capped = node.find("capped");
+    return primitives::cylinder(std::move(name), radius, height, segments("slices", 3, 48),
+                                capped ? capped->boolean() : true);
+  }
+  if (type.string() == "torus") {
+    node.expectObject({"type", "major_radius", "minor_radius", "major_segments", "minor_segments"});
+    const float major = length("major_radius"), minor = length("minor_radius");
+    return primitives::torus(std::move(name), major, minor, segments("major_segments", 3, 64),
+                             segments("minor_segments", 3, 32));
+  }
+  if (type.string() == "lathe") {
+    node.expectObject({"type", "profile", "slices"});
+    std::vector<glm::vec2> profile;
+    for (const JsonNode& point : node.at("profile").array(2, kMaxProfilePoints)) {
+      profile.push_back(point.vec2());
+      if (profile.back().x < 0.0f) point.fail("profile radius (the first number) must be at least 0");
+    }
+    return primitives::lathe(std::move(name), profile, segments("slices", 3, 64));
+  }
+  type.fail("unknown primitive type " + JsonNode::quoted(type.string()) +
+            "; use grid, sphere, box, cylinder, torus or lathe");
+}
+
+GltfMeshSelector readMeshSelector(const JsonNode& node) {
+  if (node.isString()) return node.string();
+  if (node.isNumber()) return static_cast<std::size_t>(node.integer(0, std::numeric_limits<std::int32_t>::max()));
+  node.fail("expected a mesh index or name, got " + node.typeName());
+}
+
+Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) {
+  node.expectObject({"name", "file", "mesh", "primitive"});
+  std::string name = meshes.add(node.at("name"));
+  const std::optional<JsonNode> pick = node.find("mesh");
+  if (node.oneOf({"file", "primitive"}) == "primitive") {
+    if (pick) pick->fail("\"mesh\" picks a mesh inside a glTF \"file\"; a primitive has none");
+    return readPrimitive(node.at("primitive"), std::move(name));
+  }
+  const JsonNode file = node.at("file");
+  Result<fs::path> path = resolveInside(baseDir, file.string());
+  if (!path) file.fail(path.error());
+  std::string extension = path->extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  const bool gltf = extension == ".gltf" || extension == ".glb";
+  if (!gltf && extension != ".obj")
+    file.fail("unsupported mesh file type " + JsonNode::quoted(extension) + "; use .obj, .gltf or .glb");
+  if (pick && !gltf) pick->fail("an OBJ file holds one mesh; \"mesh\" only picks among a glTF file's meshes");
+  Result<Mesh> mesh =
+      gltf ? importGltf(path.value(), pick ? readMeshSelector(*pick) : GltfMeshSelector{}, std::move(name))
+           : importObj(path.value(), std::move(name));
+  if (!mesh) file.fail(mesh.error());
+  return std::move(mesh).value();
+}
+
+Material readMaterial(const JsonNode& node, NameIndex& materials) {
+  node.expectObject({"name", "color", "unlit", "checker", "reflectivity"});
+  Material material;
+  material.name = materials.add(node.at("name"));
+  material.baseColor = readColor(node.at("color"));
+  if (const auto unlit = node.find("unlit")) material.unlit = unlit->boolean();
+  if (const auto reflectivity = node.find("reflectivity"))
+    material.reflectivity = static_cast<float>(reflectivity->inRange(0.0, 1.0));
+  if (const auto checker = node.find("checker")) {
+    checker->expectObject({"color", "cells_per_unit"});
+    material.checker = Checker{readColor(checker->at("color")), 1.0f};
+    if (const auto cells = checker->find("cells_per_unit"))
+      material.checker->cellsPerUnit = static_cast<float>(cells->positive());
+  }
+  return material;
+}
+
+AnalyticShape readAnalyticShape(const JsonNode& node) {
+  node.expectObject({"sphere", "ellipsoid"});
+  const std::string_view kind = node.oneOf({"sphere", "ellipsoid"});
+  const JsonNode body = node.at(kind);
+  AnalyticShape shape;
+  if (kind == "sphere") {
+    body.expectObject({"center", "radius"});
+    shape.kind = AnalyticShape::Kind::Sphere;
+    shape.radii = glm::vec3(static_cast<float>(body.at("radius").positive()));
+  } else {
+    body.expectObject({"center", "radii"});
+    shape.kind = AnalyticShape::Kind::Ellipsoid;
+    shape.radii = readPositiveVec3(body.at("radii"));
+  }
+  if (const auto center = body.find("center")) shape.center = center->vec3();
+  return shape;
+}
+
+MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
+  node.expectObject({"curvature", "closed", "closed_twin", "analytic"});
+  MirrorInfo mirror;
+  const JsonNode curvature = node.at("curvature");
+  if (curvature.string() == "convex")
+    mirror.curvature = MirrorCurvature::Convex;
+  else if (curvature.string() == "concave")
+    mirror.curvature = MirrorCurvature::Concave;
+  else if (curvature.string() == "mixed")
+    mirror.curvature = MirrorCurvature::Mixed;
+  else
+    curvature.fail("unknown curvature " + JsonNode::quoted(curvature.string()) + "; use convex, concave or mixed");
+  const std::optional<JsonNode> twin = node.find("closed_twin");
+  const std::optional<JsonNode> closed = node.find("closed");
+  mirror.closed = closed ? closed->boolean() : !twin;
+  if (!mirror.closed && !twin)
+    node.fail(
+        "an open mirror (\"closed\": false) needs \"closed_twin\": a closed mesh of the same surface for the "
+        "reflection search");
+  if (mirror.closed && twin) twin->fail("only an open mirror takes a closed twin; drop it or set \"closed\": false");
+  if (twin) mirror.closedTwinMesh = meshes.find(*twin);
+  if (const auto analytic = node.find("analytic")) mirror.analytic = readAnalyticShape(*analytic);
+  return mirror;
+}
+
+SceneObject readObject(const JsonNode& node, Names& names) {
+  node.expectObject({"name", "mesh", "material", "translation", "rotation", "scale", "mirror", "reflected"});
+  SceneObject object;
+  const JsonNode name = node.at("name");
+  object.name = names.objects.add(name);
+  if (object.name == "camera") name.fail("\"camera\" is reserved: animations use it to target the camera");
+  object.mesh = names.meshes.find(node.at("mesh"));
+  object.material = names.materials.find(node.at("material"));
+  object.transform = readTransform(node, math::Transform{});
+  if (const auto mirror = node.find("mirror")) object.mirror = readMirror(*mirror, names.meshes);
+  if (const auto reflected = node.find("reflected")) object.reflected = reflected->boolean();
+  return object;
+}
+
+Light readLight(const JsonNode& node) {
+  Light light;
+  const JsonNode type = node.at("type");
+  if (type.string() == "directional") {
+    node.expectObject({"type", "direction", "color", "intensity"});
+    light.kind = Light::Kind::Directional;
+    light.vector = readDirection(node.at("direction"));
+  } else if (type.string() == "point") {
+    node.expectObject({"type", "position", "color", "intensity"});
+    light.kind = Light::Kind::Point;
+    light.vector = node.at("position").vec3();
+  } else {
+    type.fail("unknown light type " + JsonNode::quoted(type.string()) + "; use directional or point");
+  }
+  if (const auto color = node.find("color")) light.color = readColor(*color);
+  if (const auto intensity = node.find("intensity")) light.intensity = static_cast<float>(intensity->atLeast(0.0));
+  return light;
+}
+
+// "keys" (each read by `readKey`, then given its "time") and "loop". Times must increase strictly.
+template <class Path, class ReadKey>
+Path readPath(const JsonNode& node, const ReadKey& readKey) {
+  node.expectObject({"keys", "loop"});
+  Path path;
+  if (const auto loop = node.find("loop")) path.loop = loop->boolean();
+  for (const JsonNode& keyNode : node.at("keys").array(1, kMaxKeys)) {
+    auto key = readKey(keyNode);
+    const JsonNode time = keyNode.at("time");
+    key.time = time.number();
+    if (!path.keys.empty() && !(key.time > path.keys.back().time))
+      time.fail("key times must increase strictly; the previous key is at " +
+                JsonNode::numberText(path.keys.back().time));
+    path.keys.push_back(std::move(key));
+  }
+  return path;
+}
+
+Animation readAnimation(const JsonNode& node, const Names& names, const Scene& scene) {
+  node.expectObject({"target", "spin", "orbit", "path", "camera_path"});
+  Animation animation;
+  const JsonNode target = node.at("target");
+  if (target.string() != "camera") animation.object = names.objects.find(target);
+  const std::string_view kind = node.oneOf({"spin", "orbit", "path", "camera_path"});
+  const JsonNode motion = node.at(kind);
+  if (kind == "spin") {
+    if (!animation.object)
+      motion.fail("spin turns an object about its pivot; the camera can orbit or follow a camera_path");
+    motion.expectObject({"axis", "degrees_per_second"});
+    animation.motion = Spin{readDirection(motion.at("axis")), motion.at("degrees_per_second").number()};
+  } else if (kind == "orbit") {
+    motion.expectObject({"center", "axis", "degrees_per_second"});
+    Orbit orbit;
+    if (const auto center = motion.find("center")) orbit.center = center->vec3();
+    orbit.axis = readDirection(motion.at("axis"));
+    orbit.degreesPerSecond = motion.at("degrees_per_second").number();
+    animation.motion = orbit;
+  } else if (kind == "path") {
+    if (!animation.object) motion.fail("path moves objects; move the camera with camera_path");
+    const math::Transform& rest = scene.objects[*animation.object].transform;
+    animation.motion = readPath<TransformPath>(motion, [&](const JsonNode& key) {
+      key.expectObject({"time", "translation", "rotation", "scale"});
+      return TransformKey{0.0, readTransform(key, rest)};
+    });
+  } else {
+    if (animation.object) motion.fail("camera_path moves the camera; move objects with path");
+    animation.motion = readPath<CameraPath>(motion, [&](const JsonNode& key) {
+      key.expectObject({"time", "eye", "target", "up", "fov"});
+      return CameraKey{0.0, readCamera(key, scene.camera)};
+    });
+  }
+  return animation;
+}
+
+Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defaultName) {
+  // The version comes first so a newer file fails on its version, not on keys this build does not know.
+  const std::optional<JsonNode> version = root.find("specula_scene");
+  if (!version) root.fail("missing \"specula_scene\": " + std::to_string(kSceneFormatVersion) + ", the format version");
+  if (const std::int64_t number =
+          version->integer(std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max());
+      number != kSceneFormatVersion)
+    version->fail("unsupported scene format version " + std::to_string(number) + "; this build reads version " +
+                  std::to_string(kSceneFormatVersion));
+  root.expectObject({"specula_scene", "name", "background", "ambient", "camera", "meshes", "materials", "objects",
+                     "lights", "animations"});
+  Scene scene;
+  const std::optional<JsonNode> name = root.find("name");
+  scene.name = name ? name->string() : std::move(defaultName);
+  if (const auto background = root.find("background")) scene.background = readColor(*background);
+  if (const auto ambient = root.find("ambient")) scene.ambient = readColor(*ambient);
+  const JsonNode camera = root.at("camera");
+  camera.expectObject({"eye", "target", "up", "fov"});
+  scene.camera = readCamera(camera, math::Camera{});
+
+  Names names;
+  std::size_t meshVertices = 0;
+  for (const JsonNode& node : root.at("meshes").array(1, kMaxEntities)) {
+    scene.meshes.push_back(readMesh(node, baseDir, names.meshes));
+    if ((meshVertices += scene.meshes.back().vertices.size()) > kMaxVerticesPerScene)
+      node.fail("meshes hold " + std::to_string(meshVertices) + " vertices so far, more than the scene limit of " +
+                std::to_string(kMaxVerticesPerScene));
+  }
+  for (const JsonNode& node : root.at("materials").array(1, kMaxEntities))
+    scene.materials.push_back(readMaterial(node, names.materials));
+  std::size_t vertices = 0, triangles = 0;
+  for (const JsonNode& node : root.at("objects").array(1, kMaxEntities)) {
+    scene.objects.push_back(readObject(node, names));
+    const Mesh& mesh = scene.meshes[scene.objects.back().mesh];
+    if ((vertices += mesh.vertices.size()) > kMaxVerticesPerScene ||
+        (triangles += mesh.triangleCount()) > kMaxTrianglesPerScene)
+      node.fail("objects so far draw " + std::to_string(vertices) + " vertices and " + std::to_string(triangles) +
+                " triangles, more than the scene limits of " + std::to_string(kMaxVerticesPerScene) + " and " +
+                std::to_string(kMaxTrianglesPerScene));
+  }
+  if (const auto lights = root.find("lights"))
+    for (const JsonNode& node : lights->array(0, kMaxLights)) scene.lights.push_back(readLight(node));
+  if (const auto animations = root.find("animations"))
+    for (const JsonNode& node : animations->array(0, kMaxEntities))
+      scene.animations.push_back(readAnimation(node, names, scene));
+  return scene;
+}
+
+}  // namespace
+
+Result<Scene> loadSceneFile(const fs::path& file) {
+  Result<std::string> text = readBoundedFile(file, kMaxSceneFileBytes);
+  if (!text) return Error{text.error()};
+  return parseScene(text.value(), file.parent_path(), file.string());
+}
+
+Result<Scene> parseScene(std::string_view json, const fs::path& baseDir, std::string_view sourceName) {
+  const std::string source(sourceName);
+  if (json.size() > kMaxSceneFileBytes)
+    return Error{source + ": " + std::to_string(json.size()) + " bytes, more than the limit of " +
+                 std::to_string(kMaxSceneFileBytes)};
+  Result<nlohmann::json> document = parseStrictJson(json);
+  if (!document) return Error{source + ": " + document.error()};
+  std::optional<Scene> scene;
+  try {
+    scene = readScene(JsonNode(document.value(), "$"), baseDir, fs::path(source).stem().string());
+  } catch (const JsonNode::Failure& failure) {
+    return Error{source + ": " + failure.message};
+  }
+  if (auto problem = sceneProblem(*scene)) return Error{source + ": " + *problem};
+  return *std::move(scene);
+}
+
+}  // namespace specula::scene

@@ -1,0 +1,471 @@
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <string>
+
+#include "scene/AssetFiles.h"
+#include "scene/GltfImporter.h"
+#include "scene/MeshNormals.h"
+#include "scene/ObjImporter.h"
+#include "scene/StrictJson.h"
+
+using namespace specula;
+using namespace specula::scene;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kAssets = fs::path(SPECULA_TEST_DATA_DIR) / "scenes" / "good" / "assets";
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string u32(std::uint32_t value) {
+  std::string bytes(4, '\0');
+  std::memcpy(bytes.data(), &value, 4);
+  return bytes;
+}
+
+std::string floats(std::initializer_list<float> values) {
+  std::string bytes(values.size() * sizeof(float), '\0');
+  std::memcpy(bytes.data(), values.begin(), bytes.size());
+  return bytes;
+}
+
+std::string padded(std::string bytes, char fill) {
+  while (bytes.size() % 4 != 0) bytes += fill;
+  return bytes;
+}
+
+// A GLB container around `document` and an optional BIN chunk, framed as the spec says.
+std::string glb(const json& document, const std::string& bin) {
+  const std::string text = padded(document.dump(), ' '), payload = padded(bin, '\0');
+  const std::size_t length = 12 + 8 + text.size() + (payload.empty() ? 0 : 8 + payload.size());
+  std::string bytes = "glTF" + u32(2) + u32(static_cast<std::uint32_t>(length)) +
+                      u32(static_cast<std::uint32_t>(text.size())) + "JSON" + text;
+  if (!payload.empty()) bytes += u32(static_cast<std::uint32_t>(payload.size())) + std::string("BIN\0", 4) + payload;
+  return bytes;
+}
+
+const std::string kTriangle = floats({0, 0, 0, 1, 0, 0, 0, 1, 0});
+
+// One triangle, positions only, stored in the GLB's BIN chunk (or in "tri.bin" once a uri is added).
+json triangleGltf() {
+  return json::parse(R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+    "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}}]}]})");
+}
+
+void expectValidMesh(const Mesh& mesh) {
+  ASSERT_EQ(mesh.indices.size() % 3, 0u);
+  for (std::uint32_t index : mesh.indices) ASSERT_LT(index, mesh.vertices.size());
+  for (const Vertex& v : mesh.vertices) {
+    ASSERT_TRUE(std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z));
+    ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+  }
+}
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected) {
+  EXPECT_NEAR(actual.x, expected.x, 1e-5f);
+  EXPECT_NEAR(actual.y, expected.y, 1e-5f);
+  EXPECT_NEAR(actual.z, expected.z, 1e-5f);
+}
+
+// Each test gets a scratch folder for the assets it writes.
+class Importer : public testing::Test {
+ protected:
+  void SetUp() override {
+    const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(testing::TempDir()) / ("specula-" + std::string(info->test_suite_name()) + "-" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, std::string_view bytes) {
+    const fs::path file = dir_ / name;
+    fs::create_directories(file.parent_path());
+    std::ofstream(file, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    return file;
+  }
+
+  Result<Mesh> gltf(const std::string& bytes, const GltfMeshSelector& which = {}) {
+    return importGltf(write("asset.glb", bytes), which, "imported");
+  }
+
+  Result<Mesh> obj(std::string_view text) { return importObj(write("asset.obj", text), "imported"); }
+
+  // The glTF with `edit` applied to triangleGltf() must fail with a message containing `expected`.
+  void expectGltfFailure(const std::function<void(json&)>& edit, const std::string& expected,
+                         const std::string& bin = kTriangle) {
+    json document = triangleGltf();
+    edit(document);
+    Result<Mesh> mesh = gltf(glb(document, bin));
+    ASSERT_FALSE(mesh.ok()) << "expected failure: " << expected;
+    EXPECT_NE(mesh.error().find(expected), std::string::npos) << "message: " << mesh.error() << "\nlacks: " << expected;
+    EXPECT_TRUE(mesh.error().starts_with((dir_ / "asset.glb").string() + ": ")) << mesh.error();
+  }
+
+  void expectObjFailure(std::string_view text, const std::string& expected) {
+    Result<Mesh> mesh = obj(text);
+    ASSERT_FALSE(mesh.ok()) << "expected failure: " << expected;
+    EXPECT_NE(mesh.error().find(expected), std::string::npos) << "message: " << mesh.error() << "\nlacks: " << expected;
+    EXPECT_TRUE(mesh.error().starts_with((dir_ / "asset.obj").string() + ": ")) << mesh.error();
+  }
+
+  fs::path dir_;
+};
+
+}  // namespace
+
+// ---- OBJ -------------------------------------------------------------------------------------------
+
+TEST_F(Importer, ObjPyramidFanSplitsItsQuadAndGetsSmoothNormalsAcrossUvSeams) {
+  Result<Mesh> mesh = importObj(kAssets / "pyramid.obj", "pyramid");
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  EXPECT_EQ(mesh->name, "pyramid");
+  EXPECT_EQ(mesh->triangleCount(), 6u);
+  expectValidMesh(mesh.value());
+  for (const Vertex& a : mesh->vertices) {
+    if (a.position == glm::vec3(0, 1, 0)) expectNear(a.normal, {0, 1, 0});
+    for (const Vertex& b : mesh->vertices)
+      if (a.position == b.position) expectNear(a.normal, b.normal);  // base corners appear with and without uv
+  }
+}
+
+TEST_F(Importer, ObjSharesCornersAndNormalizesTheFilesNormals) {
+  Result<Mesh> mesh =
+      obj("v 0 0 0\nv 1 0 0\nv 1 0 -1\nv 0 0 -1\nvt 0 0\nvt 1 1\nvn 0 3 0\n"
+          "f 1/1/1 2/1/1 3/2/1\nf 1/1/1 3/2/1 4/1/1\n");
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  EXPECT_EQ(mesh->vertices.size(), 4u);
+  EXPECT_EQ(mesh->indices.size(), 6u);
+  for (const Vertex& v : mesh->vertices) expectNear(v.normal, {0, 1, 0});
+  EXPECT_EQ(mesh->vertices[2].uv, glm::vec2(1, 1));
+}
+
+TEST_F(Importer, ObjWithoutUvGetsZeroUvAndAcceptsRelativeIndicesAndAnyLineEnding) {
+  Result<Mesh> mesh = obj("v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf -3 -2 -1\n");
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  ASSERT_EQ(mesh->vertices.size(), 3u);
+  EXPECT_EQ(mesh->vertices[1].uv, glm::vec2(0));
+  expectNear(mesh->vertices[0].normal, {0, 0, 1});
+}
+
+TEST_F(Importer, ObjTagLinesCannotAmplifyMemory) {
+  // tinyobjloader would reserve 8192 values for each of these lines: tens of gigabytes in all.
+  std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  for (int i = 0; i < 200000; ++i) text += "  t crease 8192/8192/8192\n";
+  Result<Mesh> mesh = obj(text);
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  EXPECT_EQ(mesh->triangleCount(), 1u);
+}
+
+TEST_F(Importer, ObjRefusesBrokenInputWithTheProblem) {
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expectObjFailure(triangle + "f 1 2 4\n", "face 1 refers to vertex 4, but the file defines 3");
+  expectObjFailure(triangle + "f 1 2 3\nf -9 1 2\n", "face 2 refers to vertex -5, but the file defines 3");
+  expectObjFailure(triangle + "vt 0 0\nf 1/1 2/2 3/1\n",
+                   "face 1 refers to texture coordinate 2, but the file defines 1");
+  expectObjFailure(triangle + "vn 0 0 1\nf 1//1 2//1 3//2\n", "face 1 refers to normal 2, but the file defines 1");
+  expectObjFailure(triangle + "f 0 1 2\n", "not a valid OBJ file");
+  expectObjFailure("v 0 0 1e999\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "vertex 1 has a non-finite coordinate");
+  expectObjFailure(triangle + "vn 0 0 0\nf 1//1 2//1 3//1\n", "normal 1 is zero or not finite");
+  expectObjFailure(triangle + "vt 0 1e999\nf 1/1 2/1 3/1\n", "texture coordinate 1 is not finite");
+  expectObjFailure(triangle, "has no faces");
+  expectObjFailure("", "empty file");
+  std::string bigFace = "f";
+  for (int i = 0; i < 256; ++i) bigFace += " 1";
+  expectObjFailure(triangle + bigFace + "\n", "face 1 has more than 255 corners");
+}
+
+TEST_F(Importer, ObjRefusesGarbageMissingFilesAndDirectories) {
+  std::mt19937 random(11);
+  std::string garbage(8192, '\0');
+  for (char& c : garbage) c = static_cast<char>(random() % 256);
+  Result<Mesh> mesh = obj(garbage);
+  if (mesh.ok()) expectValidMesh(mesh.value());  // stray "v"/"f" lines may survive; they must still be sound
+  EXPECT_FALSE(importObj(dir_ / "missing.obj", "m").ok());
+  fs::create_directories(dir_ / "folder.obj");
+  Result<Mesh> folder = importObj(dir_ / "folder.obj", "m");
+  ASSERT_FALSE(folder.ok());
+  EXPECT_NE(folder.error().find("is a directory"), std::string::npos) << folder.error();
+}
+
+TEST_F(Importer, ObjMutationsNeverCrashAndYieldOnlySoundMeshes) {
+  const std::string original = readAll(kAssets / "pyramid.obj");
+  std::mt19937 random(5);
+  for (int round = 0; round < 300; ++round) {
+    std::string bytes = original;
+    for (int flips = 0; flips < 4; ++flips) bytes[random() % bytes.size()] = "0123456789 -/\nfvt.e"[random() % 19];
+    Result<Mesh> mesh = obj(bytes);
+    if (mesh.ok()) expectValidMesh(mesh.value());
+  }
+}
+
+// ---- glTF ------------------------------------------------------------------------------------------
+
+TEST_F(Importer, GltfQuadPickedByNameKeepsItsNormalsAndUv) {
+  Result<Mesh> mesh = importGltf(kAssets / "quad.gltf", std::string("quad"), "quad");
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  EXPECT_EQ(mesh->vertices.size(), 4u);
+  EXPECT_EQ(mesh->indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+  for (const Vertex& v : mesh->vertices) expectNear(v.normal, {0, 1, 0});
+  EXPECT_EQ(mesh->vertices[2].uv, glm::vec2(1, 1));
+  expectNear(mesh->vertices[2].position, {1, 0, 1});
+}
+
+TEST_F(Importer, GltfMeshByIndexFromAnExternalBufferIsFlatShadedWithoutNormals) {
+  Result<Mesh> mesh = importGltf(kAssets / "quad-external.gltf", std::size_t{1}, "triangle");
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  ASSERT_EQ(mesh->vertices.size(), 3u);
+  for (const Vertex& v : mesh->vertices) expectNear(v.normal, {0, 0, 1});
+}
+
+TEST_F(Importer, GlbWithNormalizedIntegerUvAndByteIndicesImports) {
+  Result<Mesh> mesh = importGltf(kAssets / "wedge.glb", {}, "wedge");
+  ASSERT_TRUE(mesh.ok()) << mesh.error();
+  EXPECT_EQ(mesh->triangleCount(), 2u);
+  EXPECT_EQ(mesh->vertices.size(), 6u);
+  expectValidMesh(mesh.value());
+  EXPECT_EQ(mesh->vertices[1].uv, glm::vec2(1, 0));
+}
+
+TEST_F(Importer, GltfRefusesToGuessAmongSeveralMeshesAndListsThem) {
+  Result<Mesh> unchosen = importGltf(kAssets / "quad.gltf", {}, "m");
+  ASSERT_FALSE(unchosen.ok());
+  EXPECT_NE(unchosen.error().find("holds 2 meshes (0 \"quad\", 1 \"triangle\"); pick one"), std::string::npos)
+      << unchosen.error();
+  Result<Mesh> unknown = importGltf(kAssets / "quad.gltf", std::string("cube"), "m");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.error().find("no mesh named \"cube\""), std::string::npos) << unknown.error();
+}
+
+TEST_F(Importer, GlbFramingMustHoldTogether) {
+  const std::string good = glb(triangleGltf(), kTriangle);
+  ASSERT_TRUE(gltf(good).ok());
+  const auto expectFailure = [&](std::string bytes, const std::string& expected) {
+    Result<Mesh> mesh = gltf(bytes);
+    ASSERT_FALSE(mesh.ok()) << expected;
+    EXPECT_NE(mesh.error().find(expected), std::string::npos) << "message: " << mesh.error() << "\nlacks: " << expected;
+  };
+  std::uint32_t jsonLength;
+  std::memcpy(&jsonLength, good.data() + 12, 4);
+  const std::size_t binStart = 20 + jsonLength;
+  expectFailure(good.substr(0, 16), "truncated GLB: 16 bytes");
+  expectFailure(good.substr(0, 4) + u32(1) + good.substr(8), "GLB container version 1");
+  expectFailure(good.substr(0, good.size() - 4), "GLB header declares");
+  expectFailure(good.substr(0, 12) + u32(0xFFFFFFF0u) + good.substr(16), "the GLB JSON chunk runs past the end");
+  expectFailure(good.substr(0, 16) + "BIN" + good.substr(19), "the first GLB chunk is not the JSON chunk");
+  // tinygltf 2.7 alone would accept a BIN chunk reaching 8 bytes past the end of the file.
+  expectFailure(
+      good.substr(0, binStart) + u32(static_cast<std::uint32_t>(good.size() - binStart)) + good.substr(binStart + 4),
+      "the GLB BIN chunk runs past the end");
+  expectFailure(good.substr(0, binStart + 4) + "JSON" + good.substr(binStart + 8),
+                "the second GLB chunk is not the BIN chunk");
+  expectFailure("glTF" + std::string(200, '\xff'), "GLB container version 4294967295");
+}
+
+TEST_F(Importer, GltfAccessorsMustLieInsideTheirBuffers) {
+  expectGltfFailure(
+      [](json& d) { d["accessors"][0]["count"] = 4; },
+      "accessor 0 (POSITION of primitive 0 of mesh 0): 4 elements of 12 bytes (stride 12, offset 0) overrun "
+      "buffer view 0 (36 bytes)");
+  expectGltfFailure([](json& d) { d["accessors"][0]["byteOffset"] = std::uint64_t{1} << 62; }, "overrun buffer view 0");
+  expectGltfFailure([](json& d) { d["accessors"][0]["count"] = std::uint64_t{1} << 40; },
+                    "has 1099511627776 elements, more than the limit of 8388608");
+  expectGltfFailure([](json& d) { d["bufferViews"][0]["byteLength"] = 1000; },
+                    "buffer view 0 (1000 bytes at offset 0) lies outside buffer 0 (36 bytes)");
+  expectGltfFailure([](json& d) { d["bufferViews"][0]["byteOffset"] = std::uint64_t{1} << 63; },
+                    "lies outside buffer 0");
+  expectGltfFailure([](json& d) { d["bufferViews"][0]["byteStride"] = 4; },
+                    "byte stride of 4, less than the 12-byte element");
+  expectGltfFailure([](json& d) { d["accessors"][0]["bufferView"] = 7; },
+                    "refers to buffer view 7, but the file has 1");
+  expectGltfFailure([](json& d) { d["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9; },
+                    "POSITION of primitive 0 of mesh 0 refers to accessor 9, but the file has 1");
+}
+
+TEST_F(Importer, GltfAccessorsMustHaveTheRightShape) {
+  expectGltfFailure([](json& d) { d["accessors"][0]["componentType"] = 5123; },
+                    "component type UNSIGNED_SHORT is not allowed here (allowed: FLOAT)");
+  expectGltfFailure([](json& d) { d["accessors"][0]["type"] = "VEC2"; }, "has VEC2 elements, expected VEC3");
+  expectGltfFailure(
+      [](json& d) {
+        d["accessors"][0]["sparse"] = json::parse(
+            R"({"count": 1, "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 0}})");
+      },
+      "sparse accessors are not supported");
+  expectGltfFailure([](json& d) { d["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); },
+                    "primitive 0 of mesh 0 has no POSITION attribute");
+  expectGltfFailure([](json& d) { d["meshes"][0]["primitives"][0]["mode"] = 5; },
+                    "has mode 5; only triangle lists (mode 4) are supported");
+  expectGltfFailure([](json& d) { d["meshes"][0]["primitives"] = json::array(); }, "mesh 0 has no primitives");
+  expectGltfFailure([](json& d) { d.erase("meshes"); }, "the file holds no meshes");
+}
+
+TEST_F(Importer, GltfAttributesAndIndicesMustBeSound) {
+  const std::string triangleAndMore = kTriangle + floats({0, 0, 1, 0, 0, 1, 0, 0, 0}) + std::string("\0\1\5\0", 4);
+  const auto withExtras = [](json& d) {
+    d["buffers"][0]["byteLength"] = 76;
+    d["bufferViews"].push_back(json::parse(R"({"buffer": 0, "byteOffset": 36, "byteLength": 36})"));
+    d["bufferViews"].push_back(json::parse(R"({"buffer": 0, "byteOffset": 72, "byteLength": 3})"));
+    d["accessors"].push_back(json::parse(R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"})"));
+    d["accessors"].push_back(json::parse(R"({"bufferView": 2, "componentType": 5121, "count": 3, "type": "SCALAR"})"));
+  };
+  expectGltfFailure(
+      [&](json& d) {
+        withExtras(d);
+        d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 1;
+      },
+      "accessor 1 (NORMAL of primitive 0 of mesh 0): element 2 is a zero vector", triangleAndMore);
+  expectGltfFailure(
+      [&](json& d) {
+        withExtras(d);
+        d["meshes"][0]["primitives"][0]["indices"] = 2;
+      },
+      "accessor 2 (indices of primitive 0 of mesh 0): index 2 is 5, but POSITION has 3 vertices", triangleAndMore);
+  expectGltfFailure(
+      [&](json& d) {
+        withExtras(d);
+        d["accessors"][2]["count"] = 2;
+        d["meshes"][0]["primitives"][0]["indices"] = 2;
+      },
+      "has 2 indices, not a multiple of 3", triangleAndMore);
+  expectGltfFailure(
+      [&](json& d) {
+        withExtras(d);
+        d["accessors"][1]["count"] = 2;
+        d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 1;
+      },
+      "has 2 elements but POSITION has 3", triangleAndMore);
+  expectGltfFailure(
+      [&](json& d) {
+        withExtras(d);
+        d["accessors"][2]["type"] = "VEC2";
+        d["accessors"][2]["count"] = 1;
+        d["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
+      },
+      "integer attributes must be normalized", triangleAndMore);
+  expectGltfFailure([](json&) {}, "element 1 is not finite", floats({0, 0, 0, NAN, 0, 0, 0, 1, 0}));
+  expectGltfFailure([](json& d) { d["accessors"][0]["count"] = 2; },
+                    "has no indices and 2 vertices, not a multiple of 3");
+}
+
+TEST_F(Importer, GltfBuffersAndUrisStayBoundedAndInsideTheFolder) {
+  expectGltfFailure([](json& d) { d["buffers"][0]["byteLength"] = std::uint64_t{1} << 40; },
+                    "buffer 0: buffers declare more than 268435456 bytes in all");
+  expectGltfFailure(
+      [](json& d) {
+        // Each buffer without a URI would get its own copy of the BIN chunk.
+        d["buffers"] = json::array();
+        for (int i = 0; i < 9; ++i) d["buffers"].push_back({{"byteLength", 32u << 20}});
+      },
+      "buffer 8: buffers declare more than");
+  expectGltfFailure([](json& d) { d["buffers"][0]["byteLength"] = -36; },
+                    "buffer 0: byteLength must be a positive integer");
+  const auto withUri = [](std::string uri) { return [uri](json& d) { d["buffers"][0]["uri"] = uri; }; };
+  expectGltfFailure(withUri("../outside.bin"), "climbs out of");
+  expectGltfFailure(withUri("/etc/passwd"), "is absolute");
+  expectGltfFailure(withUri("http://example.com/tri.bin"), "is a URI");
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.bin").c_str(), 0600), 0);
+  expectGltfFailure(withUri("pipe.bin"), "is not a regular file");  // and must not block reading it
+  write("tri.bin", kTriangle);
+  json document = triangleGltf();
+  document["buffers"][0]["uri"] = "tri.bin";
+  Result<Mesh> external = importGltf(write("tri.gltf", document.dump()), {}, "m");
+  EXPECT_TRUE(external.ok()) << external.error();
+}
+
+TEST_F(Importer, GltfJsonIsParsedStrictlyBeforeTinyGltfSeesIt) {
+  expectGltfFailure([](json& d) { d["extras"] = json::parse(std::string(500, '[') + std::string(500, ']')); },
+                    "nested deeper than 64 levels");
+  Result<Mesh> duplicate = gltf(R"({"asset": {"version": "2.0"}, "asset": {"version": "2.0"}})");
+  ASSERT_FALSE(duplicate.ok());
+  EXPECT_NE(duplicate.error().find("$.asset: duplicate key"), std::string::npos) << duplicate.error();
+  Result<Mesh> notJson = gltf("solid cube\nfacet normal 0 0 1\n");
+  ASSERT_FALSE(notJson.ok());
+  EXPECT_NE(notJson.error().find("invalid JSON"), std::string::npos) << notJson.error();
+  Result<Mesh> empty = gltf("");
+  ASSERT_FALSE(empty.ok());
+  EXPECT_NE(empty.error().find("empty file"), std::string::npos) << empty.error();
+}
+
+TEST_F(Importer, EveryTruncationOfAGoodAssetFailsCleanly) {
+  for (const char* name : {"wedge.glb", "quad.gltf"}) {
+    const std::string bytes = readAll(kAssets / name);
+    // Cutting only trailing whitespace off the JSON file leaves it intact.
+    for (std::size_t length = 0; length <= bytes.find_last_not_of(" \n"); ++length) {
+      Result<Mesh> mesh = importGltf(write(name, bytes.substr(0, length)), std::size_t{0}, "m");
+      EXPECT_FALSE(mesh.ok()) << name << " cut to " << length << " bytes imported";
+    }
+  }
+}
+
+TEST_F(Importer, GlbMutationsNeverCrashAndYieldOnlySoundMeshes) {
+  const std::string original = readAll(kAssets / "wedge.glb");
+  std::mt19937 random(3);
+  for (int round = 0; round < 2000; ++round) {
+    std::string bytes = original;
+    for (int flips = 1 + round % 4; flips > 0; --flips)
+      bytes[random() % bytes.size()] = static_cast<char>(random() % 256);
+    Result<Mesh> mesh = gltf(bytes);
+    if (mesh.ok()) expectValidMesh(mesh.value());
+  }
+}
+
+// ---- shared pieces ---------------------------------------------------------------------------------
+
+TEST_F(Importer, ReadBoundedFileRefusesOversizedAndNonRegularFiles) {
+  const fs::path file = write("ten.txt", "0123456789");
+  EXPECT_EQ(readBoundedFile(file, 10).value(), "0123456789");
+  Result<std::string> big = readBoundedFile(file, 9);
+  ASSERT_FALSE(big.ok());
+  EXPECT_EQ(big.error(), file.string() + ": 10 bytes, more than the limit of 9");
+  EXPECT_EQ(readBoundedFile(dir_ / "none", 9).error(), (dir_ / "none").string() + ": no such file");
+  EXPECT_EQ(readBoundedFile(dir_, 9).error(), dir_.string() + ": is a directory, not a file");
+  EXPECT_EQ(readBoundedFile("/dev/zero", 9).error(), "/dev/zero: is not a regular file");
+}
+
+TEST(AssetFiles, ResolveInsideKeepsPathsWithinTheFolder) {
+  EXPECT_EQ(resolveInside("scenes", "assets/./a.obj").value(), fs::path("scenes/assets/a.obj"));
+  EXPECT_EQ(resolveInside("scenes", "assets/../a.obj").value(), fs::path("scenes/a.obj"));
+  EXPECT_FALSE(resolveInside("scenes", "assets/../../a.obj").ok());
+  EXPECT_FALSE(resolveInside("scenes", "/a.obj").ok());
+  EXPECT_FALSE(resolveInside("scenes", "").ok());
+  EXPECT_FALSE(resolveInside("scenes", "file:///a.obj").ok());
+  EXPECT_FALSE(resolveInside("scenes", std::string_view("a\0/../../b", 10)).ok());
+}
+
+TEST(MeshNormals, SmoothNormalsAreSharedByVerticesAtOnePosition) {
+  // Two triangles folded along the x axis, their shared edge duplicated as a uv seam would.
+  Mesh mesh;
+  mesh.vertices = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 0, -1}}, {{0, 0, 0}}, {{0, -1, 0}}, {{1, 0, 0}}};
+  mesh.indices = {0, 1, 2, 3, 4, 5};
+  computeSmoothNormals(mesh);
+  expectNear(mesh.vertices[0].normal, glm::normalize(glm::vec3(0, 1, 1)));
+  expectNear(mesh.vertices[3].normal, mesh.vertices[0].normal);
+  expectNear(mesh.vertices[2].normal, {0, 1, 0});
+  expectNear(mesh.vertices[4].normal, {0, 0, 1});
+}
+
+TEST(MeshNormals, FlatShadingGivesEachTriangleItsOwnVerticesAndFaceNormal) {
+  Mesh mesh;
+  mesh.vertices = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
+  mesh.indices = {0, 1, 2, 0, 3, 1};
+  makeFlatShaded(mesh);
+  ASSERT_EQ(mesh.vertices.size(), 6u);
+  EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+  for (int i = 0; i < 3; ++i) expectNear(mesh.vertices[static_cast<std::size_t>(i)].normal, {0, 0, 1});
+  for (int i = 3; i < 6; ++i) expectNear(mesh.vertices[static_cast<std::size_t>(i)].normal, {0, 1, 0});
+}

@@ -64,6 +64,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   gl.Enable(GL_SCISSOR_TEST);
   program_.use();
   program_.set("worldToClip", worldToClip);
+  program_.set("eyePosition", frame.pose.camera.eye);
 
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.positionTexture(), 0, mirror->layer);
@@ -84,8 +85,19 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     if (rect.empty()) continue;
     gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
     const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror->mirrorObject];
+    const glm::mat3 normalToWorld = math::normalMatrix(objectToWorld);
     program_.set("objectToWorld", objectToWorld);
-    program_.set("normalToWorld", math::normalMatrix(objectToWorld));
+    program_.set("normalToWorld", normalToWorld);
+    // The exact surface where one is known and the mesh is the whole closed mirror.
+    const scene::MirrorInfo& info = *frame.scene.objects[mirror->mirrorObject].mirror;
+    const bool analytic = info.analytic.has_value() && info.closed;
+    program_.set("analytic", analytic ? 1 : 0);
+    if (analytic) {
+      program_.set("worldToObject", glm::inverse(objectToWorld));
+      program_.set("objectNormalToWorld", normalToWorld);
+      program_.set("quadricCenter", info.analytic->center);
+      program_.set("quadricRadii", info.analytic->radii);
+    }
     frame.meshes.draw(frame.searchMesh(mirror->mirrorObject));
   }
   gl.Disable(GL_SCISSOR_TEST);

@@ -83,20 +83,32 @@ ivec2 coldSearch(inout int steps, out float value) {
 }
 
 // Bilinear surface between texel centres (texel i's centre at coordinate i); false off the mirror.
+// A cell with one texel off the mirror is completed as a parallelogram from the other three, so
+// refinement reaches the silhouette, where grazing reflection points live.
 bool surfaceAt(vec2 coordinate, out vec3 position, out vec3 normal) {
   ivec2 base = ivec2(floor(coordinate));
   vec2 f = coordinate - vec2(base);
-  vec4 p00 = texelFetch(gbufferPosition, ivec3(base, layer), 0);
-  vec4 p10 = texelFetch(gbufferPosition, ivec3(base + ivec2(1, 0), layer), 0);
-  vec4 p01 = texelFetch(gbufferPosition, ivec3(base + ivec2(0, 1), layer), 0);
-  vec4 p11 = texelFetch(gbufferPosition, ivec3(base + ivec2(1, 1), layer), 0);
-  if (min(min(p00.w, p10.w), min(p01.w, p11.w)) <= 0.0) return false;
-  position = mix(mix(p00.xyz, p10.xyz, f.x), mix(p01.xyz, p11.xyz, f.x), f.y);
-  vec3 n00 = texelFetch(gbufferNormal, ivec3(base, layer), 0).xyz;
-  vec3 n10 = texelFetch(gbufferNormal, ivec3(base + ivec2(1, 0), layer), 0).xyz;
-  vec3 n01 = texelFetch(gbufferNormal, ivec3(base + ivec2(0, 1), layer), 0).xyz;
-  vec3 n11 = texelFetch(gbufferNormal, ivec3(base + ivec2(1, 1), layer), 0).xyz;
-  normal = normalize(mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y));
+  const ivec2 corner[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(1, 1));
+  vec3 p[4], n[4];
+  int missing = -1;
+  for (int i = 0; i < 4; ++i) {
+    vec4 texel = texelFetch(gbufferPosition, ivec3(base + corner[i], layer), 0);
+    if (texel.w <= 0.0 || any(greaterThanEqual(base + corner[i], textureSize(gbufferPosition, 0).xy)) ||
+        any(lessThan(base + corner[i], ivec2(0)))) {
+      if (missing >= 0) return false;
+      missing = i;
+      continue;
+    }
+    p[i] = texel.xyz;
+    n[i] = texelFetch(gbufferNormal, ivec3(base + corner[i], layer), 0).xyz;
+  }
+  if (missing >= 0) {  // the corner opposite the missing one is shared by both its neighbours
+    int opposite = 3 - missing, a = missing ^ 1, b = missing ^ 2;
+    p[missing] = p[a] + p[b] - p[opposite];
+    n[missing] = n[a] + n[b] - n[opposite];
+  }
+  position = mix(mix(p[0], p[1], f.x), mix(p[2], p[3], f.x), f.y);
+  normal = normalize(mix(mix(n[0], n[1], f.x), mix(n[2], n[3], f.x), f.y));
   return true;
 }
 

@@ -1,0 +1,19 @@
+# Specula on Mesa's software GL (llvmpipe): runs on any x86-64 host, no GPU needed.
+#   docker build -f docker/cpu.Dockerfile -t specula:cpu .
+#   docker run --rm -v "$PWD/out:/out" specula:cpu render --scene checker-sphere --out /out/frame.png
+FROM debian:bookworm-slim AS build
+COPY docker/install-deps.sh /src/docker/install-deps.sh
+RUN /src/docker/install-deps.sh
+COPY . /src
+RUN cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPECULA_BUILD_TESTS=OFF \
+ && cmake --build /build
+
+FROM debian:bookworm-slim
+COPY docker/install-deps.sh /tmp/install-deps.sh
+RUN /tmp/install-deps.sh --runtime && rm -rf /var/lib/apt/lists/* /tmp/install-deps.sh
+COPY --from=build /build/bin/ /usr/local/bin/
+# llvmpipe uses every core by default; set LP_NUM_THREADS to share a host.
+USER nobody
+WORKDIR /tmp
+ENTRYPOINT ["specula"]
+CMD ["--help"]

@@ -1,0 +1,50 @@
+#pragma once
+// Options of one subcommand: `--name value`, `--name=value` or a bare `--flag`. The same table
+// parses the arguments and prints --help, so the help cannot drift from what is accepted.
+#include <glm/glm.hpp>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "base/Result.h"
+
+namespace specula::app {
+
+struct OptionSpec {
+  std::string name;       // without dashes: "size"
+  std::string valueName;  // "WxH"; empty for a flag that takes no value
+  std::string help;
+  std::string defaultValue;  // shown in --help; empty for none
+};
+
+class CommandLine {
+ public:
+  CommandLine(std::string usage, std::string summary, std::vector<OptionSpec> options);
+
+  // Parses arguments after the subcommand. --help sets helpRequested() instead of failing.
+  Status parse(std::span<const std::string> arguments);
+  bool helpRequested() const { return helpRequested_; }
+  std::string help() const;
+
+  bool has(const std::string& name) const { return values_.contains(name); }
+  // The given value, else the option's default.
+  std::string text(const std::string& name) const;
+
+  // Typed readers; each error names the option, what it expects and what it got.
+  Result<double> number(const std::string& name) const;
+  Result<int> integer(const std::string& name, int low, int high) const;
+  Result<glm::vec3> vector3(const std::string& name) const;
+  Result<std::pair<int, int>> size(const std::string& name, int maxSide) const;
+
+ private:
+  const OptionSpec* find(const std::string& name) const;
+
+  std::string usage_, summary_;
+  std::vector<OptionSpec> options_;
+  std::map<std::string, std::string> values_;
+  bool helpRequested_ = false;
+};
+
+}  // namespace specula::app

@@ -1,0 +1,11 @@
+#pragma once
+// The subcommands of `specula`; each returns the process exit code.
+#include <span>
+#include <string>
+
+namespace specula::app {
+
+int runRender(std::span<const std::string> arguments);
+int runScenes(std::span<const std::string> arguments);
+
+}  // namespace specula::app

@@ -1,0 +1,171 @@
+// `specula render`: one deterministic frame of a scene to a PNG or JPEG file, with per-stage timings.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "app/SceneSource.h"
+#include "encode/JpegEncoder.h"
+#include "encode/PngEncoder.h"
+#include "gl/GlContext.h"
+#include "reference/RayTracer.h"
+#include "render/Renderer.h"
+#include "scene/ScenePose.h"
+
+namespace specula::app {
+
+namespace {
+
+constexpr int kMaxFrameSide = 8192;
+constexpr int kJpegQuality = 92;
+
+CommandLine renderOptions() {
+  return CommandLine(
+      "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
+      "[--time SECONDS] [--method search|raytrace|none] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "Renders one frame of a scene deterministically and prints the time each stage took.\n"
+      "Camera options override the scene's (animated) camera one value at a time.\n"
+      "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
+      "raytrace = the exact reference (Embree, CPU); none = mirrors in their own colour only (GL).",
+      {
+          {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`) or JSON scene file", "checker-sphere"},
+          {"size", "WxH", "frame size in pixels", "640x480"},
+          {"eye", "x,y,z", "camera position, world metres", ""},
+          {"target", "x,y,z", "point the camera looks at", ""},
+          {"up", "x,y,z", "camera up direction", ""},
+          {"fov", "DEG", "vertical field of view in degrees", ""},
+          {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
+          {"method", "METHOD", "search | raytrace | none", "search"},
+          {"margin", "SHARE", "G-buffer border per side as a share of the frame (search)", "0.1"},
+          {"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"},
+          {"gl", "BACKEND", "auto | egl-device | egl-surfaceless | osmesa", "auto"},
+      });
+}
+
+int fail(const std::string& message) {
+  std::cerr << "specula render: " << message << "\n";
+  return 1;
+}
+
+// Applies --eye/--target/--up/--fov over the posed camera.
+Status overrideCamera(const CommandLine& options, math::Camera& camera) {
+  for (auto [name, field] : {std::pair{"eye", &camera.eye}, {"target", &camera.target}, {"up", &camera.up}}) {
+    if (!options.has(name)) continue;
+    auto value = options.vector3(name);
+    if (!value) return Error{value.error()};
+    *field = *value;
+  }
+  if (options.has("fov")) {
+    auto fov = options.number("fov");
+    if (!fov) return Error{fov.error()};
+    camera.fovYDegrees = static_cast<float>(*fov);
+  }
+  if (auto problem = math::cameraProblem(camera)) return Error{"bad camera: " + *problem};
+  return {};
+}
+
+std::string formatMilliseconds(double milliseconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", milliseconds);
+  return text;
+}
+
+// Per-stage timings and search statistics of a GL frame, as `render` prints them.
+std::string describeFrame(const render::RenderedFrame& frame) {
+  std::string text = "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ":";
+  for (const render::StageTiming& stage : frame.timings.stages)
+    text += " " + stage.name + " " + formatMilliseconds(stage.milliseconds) + " ms,";
+  text += " total " + formatMilliseconds(frame.timings.totalMilliseconds) + " ms\n";
+  if (frame.visibleMirrors > 0) {
+    const passes::SearchStatistics& search = frame.search;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "reflections: %zu mirrors, %u vertices searched, steps mean %.2f max %u, %u cold starts, %u hidden, "
+                  "%u unsolved\n",
+                  frame.visibleMirrors, search.searched,
+                  search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
+                  search.coldStarts, search.hidden, search.unsolved);
+    text += line;
+  }
+  return text;
+}
+
+}  // namespace
+
+int runRender(std::span<const std::string> arguments) {
+  CommandLine options = renderOptions();
+  if (Status status = options.parse(arguments); !status) return fail(status.error());
+  if (options.helpRequested()) {
+    std::cout << options.help();
+    return 0;
+  }
+  auto size = options.size("size", kMaxFrameSide);
+  auto time = options.number("time");
+  auto platform = gl::parsePlatformChoice(options.text("gl"));
+  if (!size) return fail(size.error());
+  if (!time) return fail(time.error());
+  if (!platform) return fail("--gl expects auto, egl-device, egl-surfaceless or osmesa, got '" + options.text("gl") + "'");
+
+  auto scene = loadScene(options.text("scene"));
+  if (!scene) return fail(scene.error());
+  std::string out = options.has("out") ? options.text("out") : (*scene)->name + ".png";
+  const std::string extension = std::filesystem::path(out).extension().string();
+  const bool jpeg = extension == ".jpg" || extension == ".jpeg";
+  if (!jpeg && extension != ".png") return fail("--out must end in .png, .jpg or .jpeg, got '" + out + "'");
+
+  scene::ScenePose pose = scene::ScenePose::at(**scene, *time);
+  if (Status status = overrideCamera(options, pose.camera); !status) return fail(status.error());
+
+  const std::string method = options.text("method");
+  if (method != "search" && method != "raytrace" && method != "none")
+    return fail("--method expects search, raytrace or none, got '" + method + "'");
+  auto margin = options.number("margin");
+  if (!margin || *margin < 0.0 || *margin > 1.0) return fail("--margin expects a share in [0, 1], got '" + options.text("margin") + "'");
+
+  std::vector<std::uint8_t> rgba;
+  std::string timings;
+  if (method == "raytrace") {
+    auto tracer = reference::RayTracer::create(*scene);
+    if (!tracer) return fail(tracer.error());
+    auto image = (*tracer)->render(pose, {size->first, size->second, 1, 0});
+    if (!image) return fail(image.error());
+    rgba = std::move(image->rgba);
+    timings = "frame " + std::to_string(size->first) + "x" + std::to_string(size->second) + ": raytrace " +
+              formatMilliseconds(image->milliseconds) + " ms (CPU, Embree)\n";
+  } else {
+    auto context = gl::GlContext::create(*platform);
+    if (!context) return fail(context.error());
+    const gl::GlInfo& info = (*context)->info();
+    std::cerr << "specula: GL platform " << info.platform << ": " << info.renderer << ", " << info.version << "\n";
+    auto renderer = render::Renderer::create(**context, *scene);
+    if (!renderer) return fail(renderer.error());
+    passes::ReflectionSettings settings;
+    settings.method = method == "none" ? passes::ReflectionMethod::None : passes::ReflectionMethod::Search;
+    settings.gbufferMargin = static_cast<float>(*margin);
+    auto frame = (*renderer)->render(pose, size->first, size->second, settings);
+    if (!frame) return fail(frame.error());
+    rgba = std::move(frame->rgba);
+    timings = describeFrame(*frame);
+  }
+
+  const encode::ImageView view{rgba.data(), size->first, size->second};
+  encode::JpegEncoder jpegEncoder;
+  auto bytes = jpeg ? jpegEncoder.encode(view, kJpegQuality) : encode::encodePng(view);
+  if (!bytes) return fail(bytes.error());
+  {
+    std::ofstream file(out, std::ios::binary | std::ios::trunc);
+    file.write(reinterpret_cast<const char*>(bytes->data()), static_cast<std::streamsize>(bytes->size()));
+    if (!file) return fail("could not write '" + out + "': check the folder exists and is writable");
+  }
+
+  const scene::Scene& s = **scene;
+  std::printf("scene %s: %zu objects, %zu vertices, %zu triangles, %zu mirrors; time %.3f s\n", s.name.c_str(),
+              s.objects.size(), s.vertexCount(), s.triangleCount(), s.mirrorCount(), *time);
+  std::fputs(timings.c_str(), stdout);
+  std::printf("wrote %s (%zu bytes)\n", out.c_str(), bytes->size());
+  return 0;
+}
+
+}  // namespace specula::app

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# `specula render` as a user runs it: files written, errors that name the problem, truthful --help.
+# usage: render_cli_test.sh PATH/TO/specula
+set -uo pipefail
+specula="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+check() {  # check DESCRIPTION COMMAND...: the command must succeed
+  local description="$1"; shift
+  if "$@"; then echo "ok - $description"; passes=$((passes + 1)); else echo "FAIL - $description"; failures=$((failures + 1)); fi
+}
+fails_with() {  # fails_with DESCRIPTION EXPECTED-TEXT ARGS...: specula must exit non-zero and print the text
+  local description="$1" expected="$2"; shift 2
+  local output
+  if output=$("$specula" "$@" 2>&1); then
+    echo "FAIL - $description: exited 0"; failures=$((failures + 1))
+  elif [[ "$output" != *"$expected"* ]]; then
+    echo "FAIL - $description: output lacks '$expected':"; echo "$output"; failures=$((failures + 1))
+  else
+    echo "ok - $description"; passes=$((passes + 1))
+  fi
+}
+is_png() { [[ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" == "89504e470d0a1a0a" ]]; }
+is_jpeg() { [[ "$(head -c 3 "$1" | od -An -tx1 | tr -d ' \n')" == "ffd8ff" ]]; }
+
+check "render writes a PNG" "$specula" render --scene checker-sphere --size 160x120 --out "$work/f.png"
+check "the PNG has a PNG signature" is_png "$work/f.png"
+check "render writes a JPEG" "$specula" render --scene checker-sphere --size 160x120 --out "$work/f.jpg" --gl osmesa
+check "the JPEG has a JPEG signature" is_jpeg "$work/f.jpg"
+output=$("$specula" render --scene checker-sphere --size 64x48 --time 2 --eye 0,4,6 --target 0,0,0 --out "$work/g.png" 2>&1)
+check "render prints per-stage timings" grep -q "frame 64x48: scene .* ms, readback .* ms, total .* ms" <<<"$output"
+check "render logs the GL platform and renderer" grep -q "specula: GL platform egl-surfaceless" <<<"$output"
+check "every built-in scene renders" bash -c "for s in \$('$specula' scenes | awk '{print \$1}'); do '$specula' render --scene \$s --size 96x72 --out '$work/'\$s.png >/dev/null || exit 1; done"
+
+fails_with "an unknown scene lists the built-ins" "neither a built-in scene (checker-sphere" render --scene no-such-scene
+fails_with "a bad size names the option" "--size expects WIDTHxHEIGHT" render --size 640by480
+fails_with "a bad vector names the option" "--eye expects three comma-separated numbers" render --eye 1,2
+fails_with "eye on target is refused" "bad camera: camera eye and target coincide" render --eye 0,0,0 --target 0,0,0
+fails_with "an unknown output format is refused" "--out must end in .png, .jpg or .jpeg" render --out "$work/f.bmp"
+fails_with "an unknown option is refused" "unknown option --colour" render --colour red
+fails_with "an unknown GL backend is refused" "--gl expects auto, egl-device" render --gl glx
+fails_with "an unwritable output names the file" "could not write '$work/missing/dir/f.png'" render --size 8x8 --out "$work/missing/dir/f.png"
+fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
+"$specula" render --help >"$work/help.txt"
+check "render --help lists every option" bash -c "for o in scene size eye target up fov time out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
+check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
+
+echo "$passes passed, $failures failed"
+exit $((failures > 0))

@@ -1,0 +1,71 @@
+#include <gtest/gtest.h>
+
+#include "gl/GlContext.h"
+#include "gl/ShaderProgram.h"
+#include "SoftwarePlatforms.h"
+
+using namespace specula;
+
+class GlPlatformTest : public ::testing::TestWithParam<gl::PlatformChoice> {};
+
+TEST_P(GlPlatformTest, CreatesCoreContextOfAtLeast43AndReportsItsRenderer) {
+  auto context = gl::GlContext::create(GetParam());
+  ASSERT_TRUE(context) << context.error();
+  const gl::GlInfo& info = (*context)->info();
+  EXPECT_EQ(info.platform, GetParam() == gl::PlatformChoice::OsMesa ? "osmesa" : "egl-surfaceless");
+  EXPECT_FALSE(info.renderer.empty());
+  GLint major = 0, minor = 0;
+  (*context)->api().GetIntegerv(GL_MAJOR_VERSION, &major);
+  (*context)->api().GetIntegerv(GL_MINOR_VERSION, &minor);
+  EXPECT_GE(major * 10 + minor, 43) << info.version;
+}
+
+TEST_P(GlPlatformTest, CompilesEveryEmbeddedShaderStageWithoutErrors) {
+  auto context = gl::GlContext::create(GetParam());
+  ASSERT_TRUE(context) << context.error();
+  auto program = gl::ShaderProgram::build((*context)->api(), {"scene/scene.vert", "scene/scene.frag"});
+  EXPECT_TRUE(program) << program.error();
+}
+
+TEST_P(GlPlatformTest, ReportsMissingShaderFileByName) {
+  auto context = gl::GlContext::create(GetParam());
+  ASSERT_TRUE(context) << context.error();
+  auto program = gl::ShaderProgram::build((*context)->api(), {"nope/missing.frag"});
+  ASSERT_FALSE(program);
+  EXPECT_NE(program.error().find("shaders/nope/missing.frag"), std::string::npos) << program.error();
+}
+
+INSTANTIATE_TEST_SUITE_P(Software, GlPlatformTest, specula::testing::kSoftwarePlatforms,
+                         specula::testing::platformTestName);
+
+TEST(GlPlatformChoice, AutoFindsAPlatformOnThisMachine) {
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  EXPECT_TRUE(context) << context.error();
+}
+
+TEST(GlPlatformChoice, EglDeviceNeverSettlesForTheSoftwareRasterizer) {
+  // On a GPU machine this yields the GPU; on a CPU-only one it must fail and say why, not pick llvmpipe.
+  auto context = gl::GlContext::create(gl::PlatformChoice::EglDevice);
+  if (context) {
+    EXPECT_EQ((*context)->info().renderer.find("llvmpipe"), std::string::npos);
+  } else {
+    EXPECT_NE(context.error().find("egl-device:"), std::string::npos) << context.error();
+    EXPECT_NE(context.error().find("install"), std::string::npos) << context.error();
+  }
+}
+
+TEST(GlPlatformChoice, ParsesTheFourNamesAndRejectsOthers) {
+  EXPECT_EQ(gl::parsePlatformChoice("auto"), gl::PlatformChoice::Auto);
+  EXPECT_EQ(gl::parsePlatformChoice("egl-device"), gl::PlatformChoice::EglDevice);
+  EXPECT_EQ(gl::parsePlatformChoice("egl-surfaceless"), gl::PlatformChoice::EglSurfaceless);
+  EXPECT_EQ(gl::parsePlatformChoice("osmesa"), gl::PlatformChoice::OsMesa);
+  EXPECT_FALSE(gl::parsePlatformChoice("glx").has_value());
+}
+
+TEST(ShaderSource, ExpandsIncludesInPlace) {
+  auto source = gl::expandShaderSource("scene/scene.frag");
+  ASSERT_TRUE(source) << source.error();
+  EXPECT_EQ(source->find("#include"), std::string::npos);
+  EXPECT_NE(source->find("vec3 shadeSurface("), std::string::npos);
+  EXPECT_EQ(source->rfind("#version 430 core", 0), 0u) << "#version must stay the first line";
+}

@@ -7,7 +7,13 @@ double reflectionError(const glm::dvec3& r, const glm::dvec3& n, const glm::dvec
   return 1.0 - glm::dot(glm::normalize(bisector), n);
 }
 
-glm::dvec3 virtualVertex(const glm::dvec3& r, const glm::dvec3& n, const glm::dvec3& vertex) {
+glm::dvec3 virtualVertex(const glm::dvec3& eye, const glm::dvec3& r, const glm::dvec3& vertex) {
+  const glm::dvec3 ray = r - eye;
+  const double toMirror = glm::length(ray);
+  return eye + (toMirror + glm::length(vertex - r)) / toMirror * ray;
+}
+
+glm::dvec3 mirrorAcrossPlane(const glm::dvec3& r, const glm::dvec3& n, const glm::dvec3& vertex) {
   return vertex - 2.0 * glm::dot(vertex - r, n) * n;
 }
 

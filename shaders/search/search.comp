@@ -27,7 +27,7 @@ uniform uint vertexCount;
 uniform int useCoherence;      // 0 forces cold starts (first frame, camera jump, benchmarks)
 uniform int maxWalkSteps;
 
-const float kInvalid = -3.0;   // below any N·B
+const float kInvalid = -3.0;   // below any reflectionObjective
 const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
                                       ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
 
@@ -122,10 +122,10 @@ bool residualAt(vec2 coordinate, out vec3 residual) {
   return true;
 }
 
-// Two Gauss–Newton steps on the bilinear surface, staying within 1.5 texels of the climb's winner.
+// Three Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's winner.
 vec2 refine(ivec2 texel) {
   vec2 x = vec2(texel);
-  for (int iteration = 0; iteration < 2; ++iteration) {
+  for (int iteration = 0; iteration < 3; ++iteration) {
     vec3 r0, rxPlus, rxMinus, ryPlus, ryMinus;
     if (!residualAt(x, r0) || !residualAt(x + vec2(0.5, 0.0), rxPlus) || !residualAt(x - vec2(0.5, 0.0), rxMinus) ||
         !residualAt(x + vec2(0.0, 0.5), ryPlus) || !residualAt(x - vec2(0.0, 0.5), ryMinus))
@@ -135,7 +135,7 @@ vec2 refine(ivec2 texel) {
     if (abs(determinant(normalMatrix)) < 1e-30) break;
     vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));
     if (length(step) > 1.0) step = normalize(step);
-    vec2 next = clamp(x + step, vec2(texel) - 1.5, vec2(texel) + 1.5);
+    vec2 next = clamp(x + step, vec2(texel) - 2.5, vec2(texel) + 2.5);
     vec3 unused;
     if (!residualAt(next, unused)) break;
     x = next;
@@ -179,12 +179,14 @@ void main() {
   if ((flags & kReflectionUnsolved) != 0) {
     result.virtualPosition = vec4(0.0);
   } else {
-    // Behind the tangent plane at the best point: region C (Estalella et al. 2006, §5.1). The search
-    // has climbed to the silhouette, whose tangent plane holds the eye; mirroring across it (not the
-    // paper's eq. 1, which lands inside the silhouette and smears) projects just outside the
-    // silhouette and meets the visible vertices continuously where (V − R)·N = 0.
-    if (dot(vertexWorld - r, n) < 0.0) flags |= kReflectionHidden;
-    result.virtualPosition = vec4(virtualVertex(r, n, vertexWorld), 1.0);
+    // Behind the tangent plane at the best point: region C (Estalella et al. 2006, §5.1). The climb
+    // has reached the silhouette; mirroring across its tangent plane (not the paper's eq. 1, which
+    // lands inside the silhouette and smears) projects just outside it. A visible vertex goes on the
+    // eye's ray through R instead: the same point when R is exact, but it needs no normal, which
+    // mirroring would magnify by about 2|V − R| at grazing reflection points.
+    bool hidden = dot(vertexWorld - r, n) < 0.0;
+    if (hidden) flags |= kReflectionHidden;
+    result.virtualPosition = vec4(hidden ? mirrorAcrossPlane(r, n, vertexWorld) : virtualVertex(eyePosition, r, vertexWorld), 1.0);
   }
   result.reflectionPoint = vec4(r, 1.0);
   result.reflectionNormal = vec4(n, 0.0);

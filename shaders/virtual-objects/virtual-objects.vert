@@ -33,7 +33,7 @@ void main() {
   outVertex.reflectionNormal = r.reflectionNormal.xyz;
   outVertex.flags = r.state.w;
   gl_Position = worldToClip * vec4(r.virtualPosition.xyz, 1.0);
-  // A hidden vertex is mirrored at the silhouette, which puts it in front of the mirror: keep where
-  // it projects (just outside the silhouette) but not its depth, so it never hides a true reflection.
+  // A hidden vertex sits on the silhouette, where true reflections of nearer surfaces also land:
+  // keep where it projects but not its depth, so its triangles never hide a true reflection.
   if ((r.state.w & kReflectionHidden) != 0) gl_Position.z = gl_Position.w;
 }

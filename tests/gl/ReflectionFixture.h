@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +26,7 @@ inline glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world
 
 struct ReflectionPointErrors {
   std::vector<double> pixels;         // |search R − exact R| on screen, for vertices both call visible
+  std::map<std::size_t, glm::dvec2> offsetBySlot;  // search R − exact R on screen, by reflection slot
   int exactHiddenButSearchVisible = 0;
   int searchHiddenButExactVisible = 0;
   double percentile(double p) const {
@@ -67,7 +69,9 @@ inline ReflectionPointErrors measureReflectionPoints(const render::Renderer& ren
           errors.searchHiddenButExactVisible++;
           continue;
         }
-        errors.pixels.push_back(glm::length(toPixels(frame.view, glm::vec3(result.reflectionPoint), frame.width, frame.height) - exactPixel));
+        const glm::dvec2 offset = toPixels(frame.view, glm::vec3(result.reflectionPoint), frame.width, frame.height) - exactPixel;
+        errors.pixels.push_back(glm::length(offset));
+        errors.offsetBySlot[range.firstSlot + v] = offset;
       }
     }
   }

@@ -113,9 +113,20 @@ TEST(SphereReflection, RandomConfigurationsAreExactOrReportedHidden) {
   EXPECT_GT(solved, 10000);  // most random pairs see each other in the mirror
 }
 
-TEST(Reflection, VirtualVertexLiesBehindTheTangentPlaneAtTheSameDistance) {
+TEST(Reflection, MirrorAcrossPlaneKeepsTheDistanceToThePlanePoint) {
   const glm::dvec3 r(0.0, 1.0, 0.0), n(0.0, 1.0, 0.0), v(2.0, 3.0, -1.0);
-  const glm::dvec3 virtualV = virtualVertex(r, n, v);
-  EXPECT_NEAR(glm::length(virtualV - r), glm::length(v - r), 1e-14);
-  EXPECT_NEAR(virtualV.y, -1.0, 1e-14);
+  const glm::dvec3 mirrored = mirrorAcrossPlane(r, n, v);
+  EXPECT_NEAR(glm::length(mirrored - r), glm::length(v - r), 1e-14);
+  EXPECT_NEAR(mirrored.y, -1.0, 1e-14);
+}
+
+TEST(Reflection, VirtualVertexOnTheEyeRayEqualsTheMirroredVertexAtAnExactReflectionPoint) {
+  const Sphere s{{0.2, -0.1, 0.4}, 1.3};
+  const glm::dvec3 eye(3.0, 2.5, 6.0);
+  for (const glm::dvec3& vertex : {glm::dvec3(-2.0, 0.5, 3.0), glm::dvec3(4.0, -1.0, -2.5), glm::dvec3(0.5, 3.0, 0.0)}) {
+    auto r = sphereReflectionPoint(s, eye, vertex);
+    ASSERT_TRUE(r);
+    const glm::dvec3 n = glm::normalize(*r - s.center);
+    EXPECT_LT(glm::length(virtualVertex(eye, *r, vertex) - mirrorAcrossPlane(*r, n, vertex)), 1e-9);
+  }
 }

@@ -1,0 +1,100 @@
+// The frame graph is plain data: which passes run for a view, decided without GL.
+#include <gtest/gtest.h>
+
+#include "passes/FramePlan.h"
+#include "scene/ScenePose.h"
+#include "scene/builtin/BuiltinScenes.h"
+
+using namespace specula;
+
+namespace {
+
+std::vector<math::Bounds> worldBounds(const scene::Scene& scene, const scene::ScenePose& pose) {
+  std::vector<math::Bounds> bounds;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    math::Bounds local;
+    for (const scene::Vertex& v : scene.meshes[scene.objects[i].mesh].vertices) local.add(v.position);
+    bounds.push_back(local.transformed(pose.objectToWorld[i]));
+  }
+  return bounds;
+}
+
+const std::vector<std::string_view> kReflectionPasses{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search",
+                                                      "virtual-objects"};
+
+}  // namespace
+
+TEST(FramePlan, VisibleMirrorRunsTheReflectionPassesForEveryOtherReflectedObject) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  ASSERT_EQ(slots.mirrors.size(), 1u);
+  EXPECT_EQ(slots.mirrors[0].reflected.size(), 1u) << "the sphere reflects the floor, not itself";
+  EXPECT_EQ(slots.slotCount, scene.meshes[scene.objects[slots.mirrors[0].reflected[0].object].mesh].vertices.size());
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, {});
+  EXPECT_EQ(plan.passes, kReflectionPasses);
+  ASSERT_EQ(plan.mirrors.size(), 1u);
+}
+
+TEST(FramePlan, MirrorOutOfViewRunsOnlyTheScenePass) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  pose.camera = {{0.0f, 2.0f, 5.0f}, {0.0f, 2.0f, 10.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};  // looking away
+  const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, {});
+  EXPECT_EQ(plan.passes, std::vector<std::string_view>{"scene"});
+  EXPECT_TRUE(plan.mirrors.empty());
+}
+
+TEST(FramePlan, MethodNoneRunsOnlyTheScenePass) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  passes::ReflectionSettings settings;
+  settings.method = passes::ReflectionMethod::None;
+  const passes::FramePlan plan = passes::planFrame(passes::ReflectionSlots::forScene(scene), worldBounds(scene, pose),
+                                                   pose.camera, 4.0f / 3.0f, settings);
+  EXPECT_EQ(plan.passes, std::vector<std::string_view>{"scene"});
+}
+
+TEST(FramePlan, OnlyVisibleMirrorsOfSeveralAreSearched) {
+  const scene::Scene scene = *scene::makeBuiltinScene("ants");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  ASSERT_EQ(slots.mirrors.size(), 8u);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  const auto bounds = worldBounds(scene, pose);
+  // Aim a narrow camera at one eye: the other seven are outside the frustum.
+  const glm::vec3 eye = bounds[slots.mirrors[0].mirrorObject].center();
+  const math::Camera camera{eye + glm::vec3(0.0f, 0.05f, 0.3f), eye, {0.0f, 1.0f, 0.0f}, 2.0f};
+  const passes::FramePlan plan = passes::planFrame(slots, bounds, camera, 1.0f, {});
+  ASSERT_FALSE(plan.mirrors.empty());
+  EXPECT_LT(plan.mirrors.size(), 8u);
+  EXPECT_EQ(plan.mirrors[0]->mirrorObject, slots.mirrors[0].mirrorObject);
+}
+
+TEST(FramePlan, ObjectsMarkedNotReflectedGetNoSlots) {
+  scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  for (scene::SceneObject& object : scene.objects)
+    if (!object.mirror) object.reflected = false;
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  ASSERT_EQ(slots.mirrors.size(), 1u);
+  EXPECT_TRUE(slots.mirrors[0].reflected.empty());
+  EXPECT_EQ(slots.slotCount, 0u);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  EXPECT_EQ(passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 1.0f, {}).passes,
+            std::vector<std::string_view>{"scene"});
+}
+
+TEST(FrustumTest, BoxJustOutsideTheWidenedSideIsCulledAndInsideIsKept) {
+  const math::Camera camera{{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, {0.0f, 1.0f, 0.0f}, 90.0f};
+  auto box = [](glm::vec3 c) {
+    math::Bounds b;
+    b.add(c - glm::vec3(0.1f));
+    b.add(c + glm::vec3(0.1f));
+    return b;
+  };
+  EXPECT_TRUE(passes::boundsInFrustum(box({0.0f, 0.0f, -5.0f}), camera, 1.0f, 0.0f));
+  EXPECT_FALSE(passes::boundsInFrustum(box({0.0f, 0.0f, 5.0f}), camera, 1.0f, 0.0f)) << "behind the eye";
+  EXPECT_FALSE(passes::boundsInFrustum(box({6.0f, 0.0f, -5.0f}), camera, 1.0f, 0.0f)) << "beyond the 45° side";
+  EXPECT_TRUE(passes::boundsInFrustum(box({5.0f, 0.0f, -5.0f}), camera, 1.0f, 0.0f)) << "straddles the side";
+  EXPECT_FALSE(passes::boundsInFrustum(math::Bounds{}, camera, 1.0f, 0.0f)) << "empty";
+}

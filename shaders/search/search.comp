@@ -83,32 +83,34 @@ ivec2 coldSearch(inout int steps, out float value) {
 }
 
 // Bilinear surface between texel centres (texel i's centre at coordinate i); false off the mirror.
-// A cell with one texel off the mirror is completed as a parallelogram from the other three, so
-// refinement reaches the silhouette, where grazing reflection points live.
+// Corners with no weight are not needed; one missing corner is completed as a parallelogram from
+// the other three, so refinement reaches the silhouette, where grazing reflection points live.
 bool surfaceAt(vec2 coordinate, out vec3 position, out vec3 normal) {
   ivec2 base = ivec2(floor(coordinate));
   vec2 f = coordinate - vec2(base);
   const ivec2 corner[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(1, 1));
+  float weight[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
   vec3 p[4], n[4];
+  bool present[4];
   int missing = -1;
   for (int i = 0; i < 4; ++i) {
-    vec4 texel = texelFetch(gbufferPosition, ivec3(base + corner[i], layer), 0);
-    if (texel.w <= 0.0 || any(greaterThanEqual(base + corner[i], textureSize(gbufferPosition, 0).xy)) ||
-        any(lessThan(base + corner[i], ivec2(0)))) {
-      if (missing >= 0) return false;
-      missing = i;
-      continue;
-    }
-    p[i] = texel.xyz;
-    n[i] = texelFetch(gbufferNormal, ivec3(base + corner[i], layer), 0).xyz;
+    ivec2 at = base + corner[i];
+    vec4 texel = texelFetch(gbufferPosition, ivec3(at, layer), 0);
+    present[i] = texel.w > 0.0 && all(lessThan(at, textureSize(gbufferPosition, 0).xy)) && all(greaterThanEqual(at, ivec2(0)));
+    p[i] = present[i] ? texel.xyz : vec3(0.0);
+    n[i] = present[i] ? texelFetch(gbufferNormal, ivec3(at, layer), 0).xyz : vec3(0.0);
+    if (present[i] || weight[i] == 0.0) continue;
+    if (missing >= 0) return false;
+    missing = i;
   }
   if (missing >= 0) {  // the corner opposite the missing one is shared by both its neighbours
     int opposite = 3 - missing, a = missing ^ 1, b = missing ^ 2;
+    if (!present[opposite] || !present[a] || !present[b]) return false;
     p[missing] = p[a] + p[b] - p[opposite];
     n[missing] = n[a] + n[b] - n[opposite];
   }
-  position = mix(mix(p[0], p[1], f.x), mix(p[2], p[3], f.x), f.y);
-  normal = normalize(mix(mix(n[0], n[1], f.x), mix(n[2], n[3], f.x), f.y));
+  position = weight[0] * p[0] + weight[1] * p[1] + weight[2] * p[2] + weight[3] * p[3];
+  normal = normalize(weight[0] * n[0] + weight[1] * n[1] + weight[2] * n[2] + weight[3] * n[3]);
   return true;
 }
 
@@ -122,15 +124,23 @@ bool residualAt(vec2 coordinate, out vec3 residual) {
   return true;
 }
 
+// Derivative of the residual per texel along `axis`: central where both sides are on the mirror,
+// one-sided at the silhouette.
+bool residualSlope(vec2 x, vec3 r0, vec2 axis, out vec3 slope) {
+  vec3 plus, minus;
+  bool hasPlus = residualAt(x + 0.5 * axis, plus), hasMinus = residualAt(x - 0.5 * axis, minus);
+  if (hasPlus && hasMinus) slope = plus - minus;
+  else if (hasPlus) slope = 2.0 * (plus - r0);
+  else if (hasMinus) slope = 2.0 * (r0 - minus);
+  return hasPlus || hasMinus;
+}
+
 // Three Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's winner.
 vec2 refine(ivec2 texel) {
   vec2 x = vec2(texel);
   for (int iteration = 0; iteration < 3; ++iteration) {
-    vec3 r0, rxPlus, rxMinus, ryPlus, ryMinus;
-    if (!residualAt(x, r0) || !residualAt(x + vec2(0.5, 0.0), rxPlus) || !residualAt(x - vec2(0.5, 0.0), rxMinus) ||
-        !residualAt(x + vec2(0.0, 0.5), ryPlus) || !residualAt(x - vec2(0.0, 0.5), ryMinus))
-      break;
-    vec3 jx = rxPlus - rxMinus, jy = ryPlus - ryMinus;  // derivatives per texel
+    vec3 r0, jx, jy;
+    if (!residualAt(x, r0) || !residualSlope(x, r0, vec2(1.0, 0.0), jx) || !residualSlope(x, r0, vec2(0.0, 1.0), jy)) break;
     mat2 normalMatrix = mat2(dot(jx, jx), dot(jx, jy), dot(jx, jy), dot(jy, jy));
     if (abs(determinant(normalMatrix)) < 1e-30) break;
     vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));

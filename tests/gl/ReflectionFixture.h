@@ -26,6 +26,7 @@ inline glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world
 
 struct ReflectionPointErrors {
   std::vector<double> pixels;         // |search R − exact R| on screen, for vertices both call visible
+  std::map<std::size_t, glm::dvec2> exactBySlot;   // exact R on screen, by reflection slot
   std::map<std::size_t, glm::dvec2> offsetBySlot;  // search R − exact R on screen, by reflection slot
   int exactHiddenButSearchVisible = 0;
   int searchHiddenButExactVisible = 0;
@@ -71,6 +72,7 @@ inline ReflectionPointErrors measureReflectionPoints(const render::Renderer& ren
         }
         const glm::dvec2 offset = toPixels(frame.view, glm::vec3(result.reflectionPoint), frame.width, frame.height) - exactPixel;
         errors.pixels.push_back(glm::length(offset));
+        errors.exactBySlot[range.firstSlot + v] = exactPixel;
         errors.offsetBySlot[range.firstSlot + v] = offset;
       }
     }

@@ -1,4 +1,5 @@
 // `specula render`: one deterministic frame of a scene to a PNG or JPEG file, with per-stage timings.
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -6,10 +7,10 @@
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "app/GlSetup.h"
 #include "app/SceneSource.h"
 #include "encode/JpegEncoder.h"
 #include "encode/PngEncoder.h"
-#include "gl/GlContext.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "scene/ScenePose.h"
@@ -42,6 +43,13 @@ CommandLine renderOptions() {
           {"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"},
           {"gl", "BACKEND", "auto | egl-device | egl-surfaceless | osmesa", "auto"},
       });
+}
+
+// <scene>.png in the working folder; a scene file's name cannot steer the write elsewhere.
+std::string defaultOutputName(const std::string& sceneName) {
+  std::string name;
+  for (char c : sceneName) name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '-';
+  return (name.empty() ? "frame" : name) + ".png";
 }
 
 int fail(const std::string& message) {
@@ -103,14 +111,12 @@ int runRender(std::span<const std::string> arguments) {
   }
   auto size = options.size("size", kMaxFrameSide);
   auto time = options.number("time");
-  auto platform = gl::parsePlatformChoice(options.text("gl"));
   if (!size) return fail(size.error());
   if (!time) return fail(time.error());
-  if (!platform) return fail("--gl expects auto, egl-device, egl-surfaceless or osmesa, got '" + options.text("gl") + "'");
 
   auto scene = loadScene(options.text("scene"));
   if (!scene) return fail(scene.error());
-  std::string out = options.has("out") ? options.text("out") : (*scene)->name + ".png";
+  std::string out = options.has("out") ? options.text("out") : defaultOutputName((*scene)->name);
   const std::string extension = std::filesystem::path(out).extension().string();
   const bool jpeg = extension == ".jpg" || extension == ".jpeg";
   if (!jpeg && extension != ".png") return fail("--out must end in .png, .jpg or .jpeg, got '" + out + "'");
@@ -135,10 +141,8 @@ int runRender(std::span<const std::string> arguments) {
     timings = "frame " + std::to_string(size->first) + "x" + std::to_string(size->second) + ": raytrace " +
               formatMilliseconds(image->milliseconds) + " ms (CPU, Embree)\n";
   } else {
-    auto context = gl::GlContext::create(*platform);
+    auto context = openGlContext(options.text("gl"));
     if (!context) return fail(context.error());
-    const gl::GlInfo& info = (*context)->info();
-    std::cerr << "specula: GL platform " << info.platform << ": " << info.renderer << ", " << info.version << "\n";
     auto renderer = render::Renderer::create(**context, *scene);
     if (!renderer) return fail(renderer.error());
     passes::ReflectionSettings settings;

@@ -15,6 +15,7 @@ constexpr const char* kUsage =
     "commands:\n"
     "  render    render one frame of a scene to a PNG or JPEG file and print per-stage timings\n"
     "  scenes    list the built-in scenes\n"
+    "  bench     measure time per pass, search steps and accuracy against exact references; CSV and JSON\n"
     "\n"
     "Run `specula <command> --help` for a command's options.\n";
 
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   const std::span<const std::string> rest(arguments.begin() + 1, arguments.end());
   if (command == "render") return specula::app::runRender(rest);
   if (command == "scenes") return specula::app::runScenes(rest);
+  if (command == "bench") return specula::app::runBench(rest);
   std::cerr << "specula: unknown command '" << command << "'\n\n" << kUsage;
   return 2;
 }

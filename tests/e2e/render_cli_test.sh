@@ -3,25 +3,7 @@
 # usage: render_cli_test.sh PATH/TO/specula
 set -uo pipefail
 specula="$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passes=0
-check() {  # check DESCRIPTION COMMAND...: the command must succeed
-  local description="$1"; shift
-  if "$@"; then echo "ok - $description"; passes=$((passes + 1)); else echo "FAIL - $description"; failures=$((failures + 1)); fi
-}
-fails_with() {  # fails_with DESCRIPTION EXPECTED-TEXT ARGS...: specula must exit non-zero and print the text
-  local description="$1" expected="$2"; shift 2
-  local output
-  if output=$("$specula" "$@" 2>&1); then
-    echo "FAIL - $description: exited 0"; failures=$((failures + 1))
-  elif [[ "$output" != *"$expected"* ]]; then
-    echo "FAIL - $description: output lacks '$expected':"; echo "$output"; failures=$((failures + 1))
-  else
-    echo "ok - $description"; passes=$((passes + 1))
-  fi
-}
+source "$(dirname "$0")/checks.sh"
 is_png() { [[ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" == "89504e470d0a1a0a" ]]; }
 is_jpeg() { [[ "$(head -c 3 "$1" | od -An -tx1 | tr -d ' \n')" == "ffd8ff" ]]; }
 
@@ -47,5 +29,4 @@ fails_with "an unknown command shows the commands" "unknown command 'paint'" pai
 check "render --help lists every option" bash -c "for o in scene size eye target up fov time out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
-echo "$passes passed, $failures failed"
-exit $((failures > 0))
+finish

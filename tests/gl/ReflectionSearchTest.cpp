@@ -6,14 +6,18 @@
 #include <map>
 #include <vector>
 
-#include "ReflectionFixture.h"
+#include "bench/ReflectionAccuracy.h"
+#include "gl/GlContext.h"
 #include "math/Reflection.h"
 #include "reference/ImageMetrics.h"
 #include "reference/RayTracer.h"
+#include "render/Renderer.h"
+#include "scene/ScenePose.h"
+#include "scene/builtin/BuiltinScenes.h"
 
 using namespace specula;
-using specula::testing::measureReflectionPoints;
-using specula::testing::toPixels;
+using specula::bench::measureReflectionPoints;
+using specula::bench::toPixels;
 
 namespace {
 

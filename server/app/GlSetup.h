@@ -1,0 +1,14 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include "base/Result.h"
+#include "gl/GlContext.h"
+
+namespace specula::app {
+
+// Resolves --gl (auto | egl-device | egl-surfaceless | osmesa) to a current context and logs the
+// platform, renderer and version chosen on stderr.
+Result<std::unique_ptr<gl::GlContext>> openGlContext(const std::string& backend);
+
+}  // namespace specula::app

@@ -1,0 +1,155 @@
+#include "bench/BenchReport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <vector>
+
+namespace specula::bench {
+
+namespace {
+
+std::string number(double value, int decimals) {
+  if (!std::isfinite(value)) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+std::string optionalNumber(const std::optional<double>& value, int decimals) {
+  return value ? number(*value, decimals) : "";
+}
+
+// Every pass name in the order the passes first ran.
+std::vector<std::string> stageNames(std::span<const SceneBenchResult> results) {
+  std::vector<std::string> names;
+  for (const SceneBenchResult& result : results)
+    for (const render::StageTiming& stage : result.stageMedians)
+      if (std::find(names.begin(), names.end(), stage.name) == names.end()) names.push_back(stage.name);
+  return names;
+}
+
+std::optional<double> stageMilliseconds(const SceneBenchResult& result, const std::string& name) {
+  for (const render::StageTiming& stage : result.stageMedians)
+    if (stage.name == name) return stage.milliseconds;
+  return std::nullopt;
+}
+
+// The columns shared by CSV and JSON: name and formatted value (empty when not measured).
+std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& r, std::span<const std::string> stages) {
+  std::vector<std::pair<std::string, std::string>> f = {
+      {"vertices", std::to_string(r.vertices)},
+      {"triangles", std::to_string(r.triangles)},
+      {"mirrors", std::to_string(r.mirrors)},
+      {"width", std::to_string(r.width)},
+      {"height", std::to_string(r.height)},
+      {"frames", std::to_string(r.frames)},
+      {"first_frame_ms", number(r.firstFrameMilliseconds, 1)},
+      {"frame_ms_median", number(r.frameMedianMilliseconds, 2)},
+      {"fps", number(r.framesPerSecond(), 1)},
+  };
+  for (const std::string& stage : stages) f.push_back({stage + "_ms", optionalNumber(stageMilliseconds(r, stage), 3)});
+  f.push_back({"steps_warm_mean", number(r.warmSteps.mean, 2)});
+  f.push_back({"steps_warm_max", std::to_string(r.warmSteps.maximum)});
+  f.push_back({"steps_cold_mean", number(r.coldSteps.mean, 2)});
+  f.push_back({"steps_cold_max", std::to_string(r.coldSteps.maximum)});
+  f.push_back({"steps_cold_large_mean", r.coldStepsLarge ? number(r.coldStepsLarge->mean, 2) : ""});
+  f.push_back({"steps_cold_large_max", r.coldStepsLarge ? std::to_string(r.coldStepsLarge->maximum) : ""});
+  f.push_back({"searched_per_frame", std::to_string(r.coldSteps.searched)});
+  f.push_back({"hidden", std::to_string(r.hiddenPerFrame)});
+  f.push_back({"unsolved", std::to_string(r.unsolvedPerFrame)});
+  const auto& e = r.pointError;
+  f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
+  f.push_back({"point_error_mean_px", e ? number(e->mean, 4) : ""});
+  f.push_back({"point_error_p99_px", e ? number(e->p99, 4) : ""});
+  f.push_back({"point_error_max_px", e ? number(e->maximum, 4) : ""});
+  f.push_back({"misjudged_hidden", e ? std::to_string(e->misjudgedHidden) : ""});
+  f.push_back({"misjudged_visible", e ? std::to_string(e->misjudgedVisible) : ""});
+  const auto& c = r.reference;
+  f.push_back({"psnr_db", c ? number(c->psnr, 2) : ""});
+  f.push_back({"ssim", c ? number(c->ssim, 4) : ""});
+  f.push_back({"mirror_mismatch", c ? number(c->mirrorMismatch, 4) : ""});
+  f.push_back({"raytrace_ms", c ? number(c->rayTraceMilliseconds, 1) : ""});
+  return f;
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string jsonString(const std::string& text) {
+  std::string quoted = "\"";
+  for (unsigned char c : text) {
+    if (c == '"' || c == '\\') {
+      quoted += '\\';
+      quoted += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\u%04x", c);
+      quoted += escape;
+    } else {
+      quoted += static_cast<char>(c);
+    }
+  }
+  return quoted + "\"";
+}
+
+std::string orDash(const std::string& text) { return text.empty() ? "-" : text; }
+
+}  // namespace
+
+std::string formatCsv(std::span<const SceneBenchResult> results) {
+  const std::vector<std::string> stages = stageNames(results);
+  std::string csv = "scene";
+  for (const auto& [name, value] : fields(SceneBenchResult{}, stages)) csv += "," + name;
+  csv += "\n";
+  for (const SceneBenchResult& result : results) {
+    csv += csvField(result.scene);
+    for (const auto& [name, value] : fields(result, stages)) csv += "," + csvField(value);
+    csv += "\n";
+  }
+  return csv;
+}
+
+std::string formatJson(std::span<const SceneBenchResult> results) {
+  const std::vector<std::string> stages = stageNames(results);
+  std::string json = "{\"scenes\": [";
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    json += i ? ",\n  {" : "\n  {";
+    json += "\"scene\": " + jsonString(results[i].scene);
+    for (const auto& [name, value] : fields(results[i], stages)) json += ", " + jsonString(name) + ": " + (value.empty() ? "null" : value);
+    json += "}";
+  }
+  return json + "\n]}\n";
+}
+
+std::string formatTable(std::span<const SceneBenchResult> results) {
+  std::string table;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-22s | %-20s | %8s\n", "scene", "frame ms", "fps",
+                "first", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms");
+  table += line;
+  for (const SceneBenchResult& r : results) {
+    const auto& e = r.pointError;
+    const auto& c = r.reference;
+    const std::string steps = number(r.warmSteps.mean, 1) + "/" + number(r.coldSteps.mean, 1) + "/" +
+                              orDash(r.coldStepsLarge ? number(r.coldStepsLarge->mean, 1) : "");
+    const std::string error = e ? number(e->mean, 3) + "/" + number(e->p99, 3) + "/" + number(e->maximum, 3) : "-";
+    const std::string image = c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
+    std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-22s | %-20s | %8s\n", r.scene.c_str(),
+                  number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
+                  number(r.firstFrameMilliseconds, 0).c_str(), steps.c_str(), error.c_str(), image.c_str(),
+                  orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str());
+    table += line;
+    std::string passes = "  passes (median ms):";
+    for (const render::StageTiming& stage : r.stageMedians) passes += " " + stage.name + " " + number(stage.milliseconds, 2);
+    table += passes + "\n";
+  }
+  return table;
+}
+
+}  // namespace specula::bench

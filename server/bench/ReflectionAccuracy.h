@@ -1,0 +1,39 @@
+#pragma once
+// The search's reflection points against the exact sphere solver (server/math), in screen pixels.
+#include <cstddef>
+#include <map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/Renderer.h"
+#include "scene/ScenePose.h"
+
+namespace specula::bench {
+
+// Where a world point lands in a width × height frame of `view`, in pixels (x right, y down from
+// the top row; pixel centres at half-integers).
+glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world, int width, int height);
+
+struct ReflectionPointErrors {
+  std::vector<double> pixels;                      // |search R − exact R| for vertices both call visible
+  std::map<std::size_t, glm::dvec2> exactBySlot;   // exact R on screen, by reflection slot
+  std::map<std::size_t, glm::dvec2> offsetBySlot;  // search R − exact R on screen, by reflection slot
+  int exactHiddenButSearchVisible = 0;  // reflected although no reflection point exists
+  int searchHiddenButExactVisible = 0;  // dropped although its reflection is visible
+
+  // The p-quantile (0 ≤ p ≤ 1) of `pixels`; 0 when there are none.
+  double percentile(double p) const;
+  double mean() const;
+};
+
+// Compares the last frame's search results (a GPU readback) with the exact reflection point on
+// every mirror with an analytic sphere, for every vertex whose exact reflection point lies inside
+// the frame (plus `marginPixels`). Mirrors without an analytic sphere are skipped.
+ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
+                                              const render::RenderedFrame& frame, double marginPixels = 0.0);
+
+// True when the scene has a mirror measureReflectionPoints can measure.
+bool hasAnalyticSphereMirror(const scene::Scene& scene);
+
+}  // namespace specula::bench

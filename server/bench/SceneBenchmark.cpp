@@ -1,0 +1,159 @@
+#include "bench/SceneBenchmark.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "bench/ReflectionAccuracy.h"
+#include "reference/ImageMetrics.h"
+#include "reference/RayTracer.h"
+#include "render/Renderer.h"
+#include "scene/ScenePose.h"
+
+namespace specula::bench {
+
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+// Steps of the frames in `search`, summed over frames.
+class StepAccumulator {
+ public:
+  void add(const passes::SearchStatistics& search) {
+    searched_ += search.searched;
+    steps_ += search.totalSteps;
+    maximum_ = std::max(maximum_, search.maxSteps);
+  }
+  StepStatistics result() const {
+    return {searched_ ? static_cast<double>(steps_) / static_cast<double>(searched_) : 0.0, maximum_,
+            static_cast<unsigned>(searched_)};
+  }
+
+ private:
+  std::uint64_t searched_ = 0, steps_ = 0;
+  unsigned maximum_ = 0;
+};
+
+// Per-stage medians; a stage missing from a frame (no mirror visible) counts as 0 ms there.
+std::vector<render::StageTiming> stageMedians(const std::vector<render::FrameTimings>& frames) {
+  std::vector<std::string> names;
+  for (const render::FrameTimings& frame : frames)
+    for (const render::StageTiming& stage : frame.stages)
+      if (std::find(names.begin(), names.end(), stage.name) == names.end()) names.push_back(stage.name);
+  std::vector<render::StageTiming> medians;
+  for (const std::string& name : names) {
+    std::vector<double> values;
+    for (const render::FrameTimings& frame : frames) {
+      const auto stage = std::find_if(frame.stages.begin(), frame.stages.end(), [&](const auto& s) { return s.name == name; });
+      values.push_back(stage == frame.stages.end() ? 0.0 : stage->milliseconds);
+    }
+    medians.push_back({name, median(std::move(values))});
+  }
+  return medians;
+}
+
+Result<SceneBenchResult::ReferenceComparison> compareWithReference(std::shared_ptr<const scene::Scene> scene,
+                                                                   const scene::ScenePose& pose,
+                                                                   const render::RenderedFrame& frame) {
+  auto tracer = reference::RayTracer::create(std::move(scene));
+  if (!tracer) return Error{tracer.error()};
+  auto truth = (*tracer)->render(pose, {frame.width, frame.height, 1, 0});
+  if (!truth) return Error{truth.error()};
+  const reference::RgbaView ours{frame.rgba, frame.width, frame.height}, theirs{truth->rgba, truth->width, truth->height};
+  auto psnr = reference::psnr(ours, theirs);
+  auto ssim = reference::ssim(ours, theirs);
+  auto mismatch = reference::maskedMismatch(ours, theirs, truth->mirrorMask);
+  if (!psnr) return Error{psnr.error()};
+  if (!ssim) return Error{ssim.error()};
+  if (!mismatch) return Error{mismatch.error()};
+  return SceneBenchResult::ReferenceComparison{*psnr, *ssim, mismatch->share(), truth->milliseconds};
+}
+
+}  // namespace
+
+Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene,
+                                        const BenchOptions& options) {
+  SceneBenchResult result;
+  result.scene = scene->name;
+  result.vertices = scene->vertexCount();
+  result.triangles = scene->triangleCount();
+  result.mirrors = scene->mirrorCount();
+  result.width = options.width;
+  result.height = options.height;
+  result.frames = options.frames;
+
+  const auto started = std::chrono::steady_clock::now();
+  auto renderer = render::Renderer::create(context, scene);
+  if (!renderer) return Error{renderer.error()};
+  render::Renderer& r = **renderer;
+  const auto poseAt = [&](int frame) { return scene::ScenePose::at(*scene, frame / options.framesPerSecond); };
+
+  // Frame 0 is cold: every vertex climbs the pyramid. Its wall time includes shader compilation.
+  scene::ScenePose pose = poseAt(0);
+  auto cold = r.render(pose, options.width, options.height);
+  if (!cold) return Error{cold.error()};
+  result.firstFrameMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  StepAccumulator coldSteps;
+  coldSteps.add(cold->search);
+  result.coldSteps = coldSteps.result();
+
+  const bool measurePoints = hasAnalyticSphereMirror(*scene);
+  ReflectionPointErrors pointErrors;
+  const auto addPointErrors = [&](const render::RenderedFrame& frame) {
+    if (!measurePoints) return;
+    ReflectionPointErrors errors = measureReflectionPoints(r, pose, frame);
+    pointErrors.pixels.insert(pointErrors.pixels.end(), errors.pixels.begin(), errors.pixels.end());
+    pointErrors.searchHiddenButExactVisible += errors.searchHiddenButExactVisible;
+    pointErrors.exactHiddenButSearchVisible += errors.exactHiddenButSearchVisible;
+  };
+  addPointErrors(*cold);
+
+  StepAccumulator warmSteps;
+  std::vector<render::FrameTimings> timings;
+  std::vector<double> totals;
+  render::RenderedFrame last = std::move(*cold);
+  for (int frame = 1; frame <= options.frames; ++frame) {
+    pose = poseAt(frame);
+    auto rendered = r.render(pose, options.width, options.height);
+    if (!rendered) return Error{rendered.error()};
+    warmSteps.add(rendered->search);
+    timings.push_back(rendered->timings);
+    totals.push_back(rendered->timings.totalMilliseconds);
+    addPointErrors(*rendered);
+    last = std::move(*rendered);
+  }
+  result.warmSteps = warmSteps.result();
+  result.stageMedians = stageMedians(timings);
+  result.frameMedianMilliseconds = median(totals);
+  result.hiddenPerFrame = last.search.hidden;
+  result.unsolvedPerFrame = last.search.unsolved;
+  if (measurePoints) {
+    result.pointError = SceneBenchResult::PointError{pointErrors.pixels.size(), pointErrors.mean(),
+                                                     pointErrors.percentile(0.99), pointErrors.percentile(1.0),
+                                                     pointErrors.searchHiddenButExactVisible,
+                                                     pointErrors.exactHiddenButSearchVisible};
+  }
+
+  if (options.reference) {
+    auto comparison = compareWithReference(scene, pose, last);
+    if (!comparison) return Error{"ray-traced reference for " + scene->name + ": " + comparison.error()};
+    result.reference = *comparison;
+  }
+
+  if (options.coldWidth > 0 && options.coldHeight > 0) {
+    passes::ReflectionSettings settings;
+    settings.coherence = false;
+    auto large = r.render(pose, options.coldWidth, options.coldHeight, settings);
+    if (!large) return Error{large.error()};
+    StepAccumulator largeSteps;
+    largeSteps.add(large->search);
+    result.coldStepsLarge = largeSteps.result();
+  }
+  return result;
+}
+
+}  // namespace specula::bench

@@ -1,0 +1,68 @@
+#pragma once
+// One scene measured the way `specula bench` reports it: per-pass frame times along the scene's own
+// animation, search steps warm and cold, reflection-point error against the exact sphere solver,
+// and the frame against the ray-traced reference.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/Result.h"
+#include "gl/GlContext.h"
+#include "render/FrameTimings.h"
+#include "scene/Scene.h"
+
+namespace specula::bench {
+
+struct BenchOptions {
+  int width = 640, height = 480;
+  int frames = 60;                 // warm frames along the animation, after a cold one
+  double framesPerSecond = 60.0;   // animation time between frames: 1 / framesPerSecond
+  int coldWidth = 1280, coldHeight = 720;  // the extra cold-start frame (0 skips it)
+  bool reference = true;           // compare with the ray tracer (CPU; the slowest part)
+};
+
+struct StepStatistics {
+  double mean = 0.0;       // 3×3 windows per searched vertex
+  unsigned maximum = 0;
+  unsigned searched = 0;   // vertices searched in the frames measured
+};
+
+struct SceneBenchResult {
+  std::string scene;
+  std::size_t vertices = 0, triangles = 0, mirrors = 0;
+  int width = 0, height = 0, frames = 0;
+
+  double firstFrameMilliseconds = 0.0;    // wall time of the very first frame: shader compilation included
+  std::vector<render::StageTiming> stageMedians;  // per pass over the warm frames (0 where a pass did not run)
+  double frameMedianMilliseconds = 0.0;   // whole frame, wall clock, median over the warm frames
+  double framesPerSecond() const { return frameMedianMilliseconds > 0.0 ? 1000.0 / frameMedianMilliseconds : 0.0; }
+
+  StepStatistics warmSteps;     // along the animation with frame-to-frame coherence
+  StepStatistics coldSteps;     // the first frame: every vertex from the pyramid
+  std::optional<StepStatistics> coldStepsLarge;  // cold at BenchOptions::coldWidth × coldHeight
+  unsigned hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's region-C and unsolved vertices
+
+  // Reflection-point error in pixels over all frames; absent without an analytic sphere mirror.
+  struct PointError {
+    std::size_t count = 0;
+    double mean = 0.0, p99 = 0.0, maximum = 0.0;
+    int misjudgedHidden = 0;   // search hid a vertex whose reflection is visible (grazing)
+    int misjudgedVisible = 0;  // search reflected a vertex that has no reflection point
+  };
+  std::optional<PointError> pointError;
+
+  // The last frame against the ray-traced reference at the same pose; absent when not asked for.
+  struct ReferenceComparison {
+    double psnr = 0.0, ssim = 0.0;
+    double mirrorMismatch = 0.0;  // share of mirror pixels that differ strongly
+    double rayTraceMilliseconds = 0.0;
+  };
+  std::optional<ReferenceComparison> reference;
+};
+
+// Measures `scene` on `context` (which must be current on this thread).
+Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene,
+                                        const BenchOptions& options);
+
+}  // namespace specula::bench

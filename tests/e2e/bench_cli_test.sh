@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# `specula bench` as a user runs it, kept tiny: a table, CSV and JSON with every column filled where
+# it applies, and errors that name the problem before any long work starts.
+# usage: bench_cli_test.sh PATH/TO/specula
+set -uo pipefail
+specula="$1"
+source "$(dirname "$0")/checks.sh"
+
+output=$("$specula" bench --scenes checker-sphere,kitchen --size 160x120 --frames 3 --cold-size 320x240 \
+  --csv "$work/b.csv" --json "$work/b.json" 2>"$work/progress.txt")
+check "bench succeeds on two scenes" test $? -eq 0
+check "bench reports progress per scene" grep -q "bench \[2/2\] kitchen: done in" "$work/progress.txt"
+check "the table has a row per scene" bash -c "grep -q '^checker-sphere ' <<<'$output' && grep -q '^kitchen ' <<<'$output'"
+check "the table lists the passes" grep -q "passes (median ms): scene .* search .* virtual-objects" <<<"$output"
+check "the CSV has a header and two rows" test "$(wc -l <"$work/b.csv")" -eq 3
+columns=$(head -1 "$work/b.csv" | tr ',' '\n' | wc -l)
+check "every CSV row has the header's columns" awk -F, -v n="$columns" 'NF != n { exit 1 }' "$work/b.csv"
+for column in frame_ms_median search_ms steps_warm_mean steps_cold_large_max point_error_p99_px psnr_db ssim raytrace_ms; do
+  check "the CSV has column $column" grep -q "\(^\|,\)$column\(,\|$\)" <(head -1 "$work/b.csv")
+done
+# Column values by name, so the checks do not depend on column order.
+value() { awk -F, -v scene="$1" -v column="$2" 'NR == 1 { for (i = 1; i <= NF; i++) at[$i] = i } $1 == scene { print $at[column] }' "$work/b.csv"; }
+check "the sphere's point error is measured and below 3 px" awk -v e="$(value checker-sphere point_error_p99_px)" 'BEGIN { exit !(e != "" && e >= 0 && e < 3) }'
+check "the bowl has no analytic sphere, so no point error" test -z "$(value kitchen point_error_p99_px)"
+check "cold searches take more steps than warm ones" awk -v c="$(value checker-sphere steps_cold_mean)" -v w="$(value checker-sphere steps_warm_mean)" 'BEGIN { exit !(c > w && w > 0) }'
+check "PSNR against the ray tracer is a real number" awk -v p="$(value checker-sphere psnr_db)" 'BEGIN { exit !(p > 10 && p < 100) }'
+check "the JSON names both scenes" bash -c "grep -q '\"scene\": \"checker-sphere\"' '$work/b.json' && grep -q '\"scene\": \"kitchen\"' '$work/b.json'"
+check "the JSON writes null where nothing was measured" grep -q '"point_error_p99_px": null' "$work/b.json"
+
+"$specula" bench --scenes quad --size 64x48 --frames 1 --cold-size none --no-reference --csv "$work/q.csv" --json "$work/q.json" >/dev/null 2>&1
+check "--no-reference and --cold-size none leave those cells empty" bash -c "[[ -z \"\$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) at[\$i] = i } NR == 2 { print \$at[\"psnr_db\"] \$at[\"steps_cold_large_mean\"] }' '$work/q.csv')\" ]]"
+
+fails_with "an unknown scene fails before rendering" "neither a built-in scene" bench --scenes checker-sphere,nope --csv "$work/x.csv"
+fails_with "a bad frame count names the option" "--frames expects an integer" bench --frames 0
+fails_with "a bad cold size names the option" "--cold-size expects WIDTHxHEIGHT" bench --cold-size big
+fails_with "an unwritable CSV names the file" "could not write '$work/no/dir/b.csv'" bench --scenes quad --size 32x24 --frames 1 --cold-size none --no-reference --csv "$work/no/dir/b.csv"
+check "bench --help lists every option" bash -c "for o in scenes size frames cold-size no-reference csv json gl; do '$specula' bench --help | grep -q -- \"--\$o\" || exit 1; done"
+check "specula --help lists bench" bash -c "'$specula' --help | grep -q '^  bench'"
+finish

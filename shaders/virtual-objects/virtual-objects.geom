@@ -1,8 +1,8 @@
 #version 430 core
 // Keeps a virtual triangle only where it can be a true reflection, so none smears across the mirror:
-// every corner has a reflection point, at least one is not hidden (region C), and each hidden corner
-// was mirrored at a silhouette point on the same side of the mirror (normals less than 90° apart)
-// as the visible corners; a hidden corner's climb can end on the far side of the silhouette.
+// every corner has a reflection point, at least one is not hidden (region C), and the corners'
+// mirror normals are less than 90° apart: corners on far sides of a mirror, or on the inside and
+// outside of a bowl, belong to different reflections that one flat triangle cannot join.
 #include "common/reflected-vertex.glsl"
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
@@ -27,13 +27,8 @@ void main() {
   int allFlags = inVertex[0].flags | inVertex[1].flags | inVertex[2].flags;
   int commonFlags = inVertex[0].flags & inVertex[1].flags & inVertex[2].flags;
   if ((allFlags & kReflectionUnsolved) != 0 || (commonFlags & kReflectionHidden) != 0) return;
-  for (int hidden = 0; hidden < 3; ++hidden) {
-    if ((inVertex[hidden].flags & kReflectionHidden) == 0) continue;
-    for (int visible = 0; visible < 3; ++visible)
-      if ((inVertex[visible].flags & kReflectionHidden) == 0 &&
-          dot(inVertex[hidden].reflectionNormal, inVertex[visible].reflectionNormal) < 0.0)
-        return;
-  }
+  for (int i = 0; i < 3; ++i)
+    if (dot(inVertex[i].reflectionNormal, inVertex[(i + 1) % 3].reflectionNormal) < 0.0) return;
   for (int i = 0; i < 3; ++i) {
     outFragment.worldPosition = inVertex[i].worldPosition;
     outFragment.worldNormal = inVertex[i].worldNormal;

@@ -5,13 +5,9 @@
 
 namespace specula::passes {
 
-namespace {
-constexpr std::size_t kMaxLights = 8;  // shaders/common/shading.glsl kMaxLights
-}
-
 void setSceneLighting(const gl::ShaderProgram& program, const scene::Scene& scene) {
   program.set("sceneAmbient", scene.ambient);
-  const std::size_t count = std::min(scene.lights.size(), kMaxLights);
+  const std::size_t count = scene.lights.size();  // at most scene::kMaxLights, as sceneProblem() checks
   program.set("lightCount", static_cast<int>(count));
   for (std::size_t i = 0; i < count; ++i) {
     const scene::Light& light = scene.lights[i];

@@ -8,9 +8,6 @@ namespace specula::reference {
 
 namespace {
 
-// shading.glsl kMaxLights: lights beyond it are not seen by the rasterizer, so not here either.
-constexpr std::size_t kMaxLights = 8;
-
 glm::vec3 surfaceColor(const scene::Material& material, const glm::vec2& uv) {
   if (!material.checker) return material.baseColor;
   const glm::vec2 scaled = uv * material.checker->cellsPerUnit;
@@ -22,8 +19,7 @@ glm::vec3 surfaceColor(const scene::Material& material, const glm::vec2& uv) {
 }  // namespace
 
 SurfaceShader::SurfaceShader(const scene::Scene& scene) : ambient_(scene.ambient) {
-  const std::size_t count = std::min(scene.lights.size(), kMaxLights);
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const scene::Light& light = scene.lights[i];
     const float w = light.kind == scene::Light::Kind::Point ? 1.0f : 0.0f;
     lights_.push_back({glm::vec4(light.vector, w), light.color * light.intensity});

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,10 @@
 #include "scene/SceneObject.h"
 
 namespace specula::scene {
+
+// Lights a scene may have: every renderer shades with all of them (shaders/common/shading.glsl
+// declares arrays of this size; a GL test checks the two agree).
+inline constexpr std::size_t kMaxLights = 8;
 
 // Everything needed to render any frame of a scene: assets, rest pose, animations.
 // Immutable after loading; sessions share it read-only and keep their own clock and overrides.

@@ -74,6 +74,7 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
         return where + "analytic shape needs a finite centre and positive radii";
     }
   }
+  if (scene.lights.size() > kMaxLights) return "more than " + std::to_string(kMaxLights) + " lights";
   for (const Light& l : scene.lights) {
     if (!inUnitRange(l.color) || !finite(l.intensity) || l.intensity < 0.0f) return "light has a bad colour or intensity";
     if (l.kind == Light::Kind::Directional ? !isUnit(l.vector) : !finite(l.vector))

@@ -24,7 +24,6 @@ namespace fs = std::filesystem;
 
 // Bounds on lists and tessellation, so no file allocates without limit before the vertex budget applies.
 constexpr std::size_t kMaxEntities = 10000;  // meshes, materials, objects, animations, each
-constexpr std::size_t kMaxLights = 64;
 constexpr std::size_t kMaxKeys = 100000;  // keyframes per path
 constexpr std::size_t kMaxProfilePoints = 1024;
 constexpr std::int64_t kMaxSegments = 1024;  // grid cells per side, slices, stacks, torus segments

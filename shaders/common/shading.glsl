@@ -2,7 +2,7 @@
 // so a reflected object is lit exactly as the object itself: at its own world position and normal.
 // Colours are linear RGB; the sRGB framebuffer encodes them on write.
 
-const int kMaxLights = 8;
+const int kMaxLights = 8;  // scene::kMaxLights
 
 uniform vec3 materialBaseColor;
 uniform int materialUnlit;           // 1: emissive, the colour written is the colour stored

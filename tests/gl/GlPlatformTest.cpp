@@ -2,6 +2,7 @@
 
 #include "gl/GlContext.h"
 #include "gl/ShaderProgram.h"
+#include "scene/Scene.h"
 #include "SoftwarePlatforms.h"
 
 using namespace specula;
@@ -25,6 +26,18 @@ TEST_P(GlPlatformTest, CompilesEveryEmbeddedShaderStageWithoutErrors) {
   ASSERT_TRUE(context) << context.error();
   auto program = gl::ShaderProgram::build((*context)->api(), {"scene/scene.vert", "scene/scene.frag"});
   EXPECT_TRUE(program) << program.error();
+}
+
+TEST_P(GlPlatformTest, ShaderLightArraysHoldExactlyTheScenesLightLimit) {
+  auto context = gl::GlContext::create(GetParam());
+  ASSERT_TRUE(context) << context.error();
+  const gl::GlApi& api = (*context)->api();
+  auto program = gl::ShaderProgram::build(api, {"scene/scene.vert", "scene/scene.frag"});
+  ASSERT_TRUE(program) << program.error();
+  const std::string last = "lightVector[" + std::to_string(scene::kMaxLights - 1) + "]";
+  const std::string beyond = "lightVector[" + std::to_string(scene::kMaxLights) + "]";
+  EXPECT_NE(api.GetUniformLocation(program->id(), last.c_str()), -1);
+  EXPECT_EQ(api.GetUniformLocation(program->id(), beyond.c_str()), -1);
 }
 
 TEST_P(GlPlatformTest, ReportsMissingShaderFileByName) {

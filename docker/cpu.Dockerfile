@@ -1,6 +1,6 @@
 # Specula on Mesa's software GL (llvmpipe): runs on any x86-64 host, no GPU needed.
 #   docker build -f docker/cpu.Dockerfile -t specula:cpu .
-#   docker run --rm -v "$PWD/out:/out" specula:cpu render --scene checker-sphere --out /out/frame.png
+#   docker run --rm --user "$(id -u):$(id -g)" -v "$PWD/out:/out" specula:cpu render --scene checker-sphere --out /out/frame.png
 FROM debian:bookworm-slim AS build
 COPY docker/install-deps.sh /src/docker/install-deps.sh
 RUN /src/docker/install-deps.sh

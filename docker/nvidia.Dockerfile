@@ -1,7 +1,7 @@
 # Specula on an NVIDIA GPU through EGL_EXT_platform_device (no X server, no display).
 # Needs the NVIDIA Container Toolkit; "graphics" makes it mount the driver's EGL libraries.
 #   docker build -f docker/nvidia.Dockerfile -t specula:nvidia .
-#   docker run --rm --gpus all -v "$PWD/out:/out" specula:nvidia render --gl egl-device --out /out/frame.png
+#   docker run --rm --gpus all --user "$(id -u):$(id -g)" -v "$PWD/out:/out" specula:nvidia render --gl egl-device --out /out/frame.png
 FROM debian:bookworm-slim AS build
 COPY docker/install-deps.sh /src/docker/install-deps.sh
 RUN /src/docker/install-deps.sh

@@ -38,7 +38,7 @@ CommandLine benchOptions() {
           {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
           {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
           {"json", "FILE", "JSON output", "bench.json"},
-          {"gl", "BACKEND", "auto | egl-device | egl-surfaceless | osmesa", "auto"},
+          glOption(),
       });
 }
 

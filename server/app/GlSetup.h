@@ -2,10 +2,14 @@
 #include <memory>
 #include <string>
 
+#include "app/CommandLine.h"
 #include "base/Result.h"
 #include "gl/GlContext.h"
 
 namespace specula::app {
+
+// The --gl option, the same for every command that renders with GL.
+inline OptionSpec glOption() { return {"gl", "BACKEND", "auto | egl-device | egl-surfaceless | osmesa", "auto"}; }
 
 // Resolves --gl (auto | egl-device | egl-surfaceless | osmesa) to a current context and logs the
 // platform, renderer and version chosen on stderr.

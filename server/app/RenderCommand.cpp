@@ -41,7 +41,7 @@ CommandLine renderOptions() {
           {"method", "METHOD", "search | raytrace | none", "search"},
           {"margin", "SHARE", "G-buffer border per side as a share of the frame (search)", "0.1"},
           {"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"},
-          {"gl", "BACKEND", "auto | egl-device | egl-surfaceless | osmesa", "auto"},
+          glOption(),
       });
 }
 

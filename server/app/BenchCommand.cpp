@@ -79,6 +79,7 @@ int runBench(std::span<const std::string> arguments) {
   auto size = options.size("size", kMaxBenchSide);
   auto frames = options.integer("frames", 1, kMaxFrames);
   if (!size) return fail(size.error());
+  if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   if (!frames) return fail(frames.error());
   std::tie(settings.width, settings.height) = *size;
   settings.frames = *frames;

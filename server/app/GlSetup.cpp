@@ -4,9 +4,15 @@
 
 namespace specula::app {
 
-Result<std::unique_ptr<gl::GlContext>> openGlContext(const std::string& backend) {
+Result<gl::PlatformChoice> parseGlOption(const std::string& backend) {
   auto platform = gl::parsePlatformChoice(backend);
   if (!platform) return Error{"--gl expects auto, egl-device, egl-surfaceless or osmesa, got '" + backend + "'"};
+  return *platform;
+}
+
+Result<std::unique_ptr<gl::GlContext>> openGlContext(const std::string& backend) {
+  auto platform = parseGlOption(backend);
+  if (!platform) return Error{platform.error()};
   auto context = gl::GlContext::create(*platform);
   if (!context) return Error{context.error()};
   const gl::GlInfo& info = (*context)->info();

@@ -112,6 +112,7 @@ int runRender(std::span<const std::string> arguments) {
   auto size = options.size("size", kMaxFrameSide);
   auto time = options.number("time");
   if (!size) return fail(size.error());
+  if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   if (!time) return fail(time.error());
 
   auto scene = loadScene(options.text("scene"));

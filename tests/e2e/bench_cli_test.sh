@@ -32,6 +32,7 @@ check "--no-reference and --cold-size none leave those cells empty" bash -c "[[ 
 
 fails_with "an unknown scene fails before rendering" "neither a built-in scene" bench --scenes checker-sphere,nope --csv "$work/x.csv"
 fails_with "a bad frame count names the option" "--frames expects an integer" bench --frames 0
+fails_with "an unknown GL backend fails before rendering" "--gl expects auto, egl-device" bench --gl glx
 fails_with "a bad cold size names the option" "--cold-size expects WIDTHxHEIGHT" bench --cold-size big
 fails_with "an unwritable CSV names the file" "could not write '$work/no/dir/b.csv'" bench --scenes quad --size 32x24 --frames 1 --cold-size none --no-reference --csv "$work/no/dir/b.csv"
 check "bench --help lists every option" bash -c "for o in scenes size frames cold-size no-reference csv json gl; do '$specula' bench --help | grep -q -- \"--\$o\" || exit 1; done"

@@ -23,6 +23,7 @@ fails_with "eye on target is refused" "bad camera: camera eye and target coincid
 fails_with "an unknown output format is refused" "--out must end in .png, .jpg or .jpeg" render --out "$work/f.bmp"
 fails_with "an unknown option is refused" "unknown option --colour" render --colour red
 fails_with "an unknown GL backend is refused" "--gl expects auto, egl-device" render --gl glx
+fails_with "an unknown GL backend is refused for the ray tracer too" "--gl expects auto, egl-device" render --method raytrace --gl glx
 fails_with "an unwritable output names the file" "could not write '$work/missing/dir/f.png'" render --size 8x8 --out "$work/missing/dir/f.png"
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"

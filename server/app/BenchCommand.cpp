@@ -59,10 +59,18 @@ std::vector<std::string> sceneList(const CommandLine& options) {
   return names;
 }
 
+std::string unwritable(const std::string& path) { return "could not write '" + path + "': check the folder exists and is writable"; }
+
+// Opening for append creates a missing file but keeps an earlier run's results until the new ones exist.
+Status checkWritable(const std::string& path) {
+  if (!std::ofstream(path, std::ios::binary | std::ios::app)) return Error{unwritable(path)};
+  return {};
+}
+
 Status writeFile(const std::string& path, const std::string& text) {
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file << text;
-  if (!file) return Error{"could not write '" + path + "': check the folder exists and is writable"};
+  if (!file) return Error{unwritable(path)};
   return {};
 }
 
@@ -94,7 +102,9 @@ int runBench(std::span<const std::string> arguments) {
   const std::vector<std::string> names = sceneList(options);
   if (names.empty()) return fail("--scenes names no scene");
 
-  // Load every scene before the long part, so a typo fails at once.
+  // Check outputs and load every scene before the long part, so a typo fails at once.
+  for (const char* output : {"csv", "json"})
+    if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
   std::vector<std::shared_ptr<const scene::Scene>> scenes;
   for (const std::string& name : names) {
     auto loaded = loadScene(name);

@@ -86,13 +86,13 @@ std::string describeFrame(const render::RenderedFrame& frame) {
   for (const render::StageTiming& stage : frame.timings.stages)
     text += " " + stage.name + " " + formatMilliseconds(stage.milliseconds) + " ms,";
   text += " total " + formatMilliseconds(frame.timings.totalMilliseconds) + " ms\n";
-  if (frame.visibleMirrors > 0) {
+  if (!frame.drawnMirrors.empty()) {
     const passes::SearchStatistics& search = frame.search;
     char line[256];
     std::snprintf(line, sizeof line,
                   "reflections: %zu mirrors, %u vertices searched, steps mean %.2f max %u, %u cold starts, %u hidden, "
                   "%u unsolved\n",
-                  frame.visibleMirrors, search.searched,
+                  frame.drawnMirrors.size(), search.searched,
                   search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
                   search.coldStarts, search.hidden, search.unsolved);
     text += line;

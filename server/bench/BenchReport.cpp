@@ -56,7 +56,7 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"steps_cold_max", std::to_string(r.coldSteps.maximum)});
   f.push_back({"steps_cold_large_mean", r.coldStepsLarge ? number(r.coldStepsLarge->mean, 2) : ""});
   f.push_back({"steps_cold_large_max", r.coldStepsLarge ? std::to_string(r.coldStepsLarge->maximum) : ""});
-  f.push_back({"searched_per_frame", std::to_string(r.coldSteps.searched)});
+  f.push_back({"searched_per_frame", std::to_string(r.searchedPerFrame)});
   f.push_back({"hidden", std::to_string(r.hiddenPerFrame)});
   f.push_back({"unsolved", std::to_string(r.unsolvedPerFrame)});
   const auto& e = r.pointError;
@@ -75,7 +75,7 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
 }
 
 std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
@@ -140,7 +140,7 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
                               orDash(r.coldStepsLarge ? number(r.coldStepsLarge->mean, 1) : "");
     const std::string error = e ? number(e->mean, 3) + "/" + number(e->p99, 3) + "/" + number(e->maximum, 3) : "-";
     const std::string image = c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
-    std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-22s | %-20s | %8s\n", r.scene.c_str(),
+    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s | %-17s | %-22s | %-20s | %8s\n", r.scene.c_str(),
                   number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
                   number(r.firstFrameMilliseconds, 0).c_str(), steps.c_str(), error.c_str(), image.c_str(),
                   orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str());

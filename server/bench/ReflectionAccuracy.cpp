@@ -1,6 +1,7 @@
 #include "bench/ReflectionAccuracy.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <optional>
 
@@ -34,7 +35,8 @@ double ReflectionPointErrors::percentile(double p) const {
   if (pixels.empty()) return 0.0;
   std::vector<double> sorted = pixels;
   std::sort(sorted.begin(), sorted.end());
-  return sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(p * static_cast<double>(sorted.size())))];
+  const double rank = std::ceil(p * static_cast<double>(sorted.size()));  // nearest-rank definition
+  return sorted[std::clamp(static_cast<std::size_t>(std::max(rank, 1.0)) - 1, std::size_t{0}, sorted.size() - 1)];
 }
 
 double ReflectionPointErrors::mean() const {
@@ -52,6 +54,8 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
   const scene::Scene& scene = renderer.scene();
   const glm::dvec3 eye(pose.camera.eye);
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
+    // Mirrors not drawn this frame still hold an older frame's results.
+    if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror.mirrorObject) == frame.drawnMirrors.end()) continue;
     const scene::SceneObject& mirrorObject = scene.objects[mirror.mirrorObject];
     if (!isAnalyticSphere(mirrorObject)) continue;
     const auto sphere = worldSphere(*mirrorObject.mirror->analytic, pose.objectToWorld[mirror.mirrorObject]);
@@ -68,6 +72,7 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
           errors.exactHiddenButSearchVisible += searchVisible;
           continue;
         }
+        if ((frame.view.worldToClip() * glm::vec4(glm::vec3(*exact), 1.0f)).w <= 0.0f) continue;  // behind the eye
         const glm::dvec2 exactPixel = toPixels(frame.view, glm::vec3(*exact), frame.width, frame.height);
         if (exactPixel.x < -marginPixels || exactPixel.y < -marginPixels || exactPixel.x > frame.width + marginPixels ||
             exactPixel.y > frame.height + marginPixels)

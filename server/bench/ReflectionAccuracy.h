@@ -12,7 +12,7 @@
 namespace specula::bench {
 
 // Where a world point lands in a width × height frame of `view`, in pixels (x right, y down from
-// the top row; pixel centres at half-integers).
+// the top row; pixel centres at half-integers). Meaningless for points behind the eye.
 glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world, int width, int height);
 
 struct ReflectionPointErrors {

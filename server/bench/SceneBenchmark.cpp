@@ -13,6 +13,9 @@ namespace specula::bench {
 
 namespace {
 
+// Identical images have infinite PSNR, which neither CSV nor JSON can hold; report this instead.
+constexpr double kPsnrCeiling = 100.0;
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -70,7 +73,7 @@ Result<SceneBenchResult::ReferenceComparison> compareWithReference(std::shared_p
   if (!psnr) return Error{psnr.error()};
   if (!ssim) return Error{ssim.error()};
   if (!mismatch) return Error{mismatch.error()};
-  return SceneBenchResult::ReferenceComparison{*psnr, *ssim, mismatch->share(), truth->milliseconds};
+  return SceneBenchResult::ReferenceComparison{std::min(*psnr, kPsnrCeiling), *ssim, mismatch->share(), truth->milliseconds};
 }
 
 }  // namespace
@@ -129,6 +132,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   result.warmSteps = warmSteps.result();
   result.stageMedians = stageMedians(timings);
   result.frameMedianMilliseconds = median(totals);
+  result.searchedPerFrame = last.search.searched;
   result.hiddenPerFrame = last.search.hidden;
   result.unsolvedPerFrame = last.search.unsolved;
   if (measurePoints) {

@@ -41,7 +41,7 @@ struct SceneBenchResult {
   StepStatistics warmSteps;     // along the animation with frame-to-frame coherence
   StepStatistics coldSteps;     // the first frame: every vertex from the pyramid
   std::optional<StepStatistics> coldStepsLarge;  // cold at BenchOptions::coldWidth × coldHeight
-  unsigned hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's region-C and unsolved vertices
+  unsigned searchedPerFrame = 0, hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's
 
   // Reflection-point error in pixels over all frames; absent without an analytic sphere mirror.
   struct PointError {
@@ -54,7 +54,7 @@ struct SceneBenchResult {
 
   // The last frame against the ray-traced reference at the same pose; absent when not asked for.
   struct ReferenceComparison {
-    double psnr = 0.0, ssim = 0.0;
+    double psnr = 0.0, ssim = 0.0;  // PSNR in dB, at most 100 (identical images)
     double mirrorMismatch = 0.0;  // share of mirror pixels that differ strongly
     double rayTraceMilliseconds = 0.0;
   };

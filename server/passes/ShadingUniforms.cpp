@@ -1,13 +1,14 @@
 #include "passes/ShadingUniforms.h"
 
-#include <algorithm>
+#include <cassert>
 #include <string>
 
 namespace specula::passes {
 
 void setSceneLighting(const gl::ShaderProgram& program, const scene::Scene& scene) {
   program.set("sceneAmbient", scene.ambient);
-  const std::size_t count = scene.lights.size();  // at most scene::kMaxLights, as sceneProblem() checks
+  const std::size_t count = scene.lights.size();
+  assert(count <= scene::kMaxLights && "scenes must pass sceneProblem()");
   program.set("lightCount", static_cast<int>(count));
   for (std::size_t i = 0; i < count; ++i) {
     const scene::Light& light = scene.lights[i];

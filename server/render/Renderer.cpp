@@ -109,7 +109,8 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     passes_.find(plan.passes[i])->second->execute(frame);
     gl.QueryCounter(stamps[i + 1].id(), GL_TIMESTAMP);
   }
-  RenderedFrame result{width, height, target->readRgba(), {}, plan.mirrors.size(), {}, view};
+  RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view};
+  for (const passes::MirrorSlots* mirror : plan.mirrors) result.drawnMirrors.push_back(mirror->mirrorObject);
   gl.QueryCounter(stamps.back().id(), GL_TIMESTAMP);
   if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
 

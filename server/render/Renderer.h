@@ -27,7 +27,7 @@ struct RenderedFrame {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // sRGB, tightly packed, row 0 at the top
   FrameTimings timings;
-  std::size_t visibleMirrors = 0;  // mirrors whose reflections were drawn
+  std::vector<std::size_t> drawnMirrors;  // scene object indices of the mirrors searched and drawn
   passes::SearchStatistics search;  // zero when no mirror was visible
   passes::FrameView view;           // the camera matrices used (for measuring in pixels)
 };

@@ -28,13 +28,16 @@ check "the JSON names both scenes" bash -c "grep -q '\"scene\": \"checker-sphere
 check "the JSON writes null where nothing was measured" grep -q '"point_error_p99_px": null' "$work/b.json"
 
 "$specula" bench --scenes quad --size 64x48 --frames 1 --cold-size none --no-reference --csv "$work/q.csv" --json "$work/q.json" >/dev/null 2>&1
+check "bench succeeds without reference and large cold frame" test $? -eq 0
+check "that CSV has a header and one row" test "$(wc -l <"$work/q.csv")" -eq 2
 check "--no-reference and --cold-size none leave those cells empty" bash -c "[[ -z \"\$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) at[\$i] = i } NR == 2 { print \$at[\"psnr_db\"] \$at[\"steps_cold_large_mean\"] }' '$work/q.csv')\" ]]"
 
 fails_with "an unknown scene fails before rendering" "neither a built-in scene" bench --scenes checker-sphere,nope --csv "$work/x.csv"
 fails_with "a bad frame count names the option" "--frames expects an integer" bench --frames 0
 fails_with "an unknown GL backend fails before rendering" "--gl expects auto, egl-device" bench --gl glx
 fails_with "a bad cold size names the option" "--cold-size expects WIDTHxHEIGHT" bench --cold-size big
-fails_with "an unwritable CSV names the file" "could not write '$work/no/dir/b.csv'" bench --scenes quad --size 32x24 --frames 1 --cold-size none --no-reference --csv "$work/no/dir/b.csv"
+fails_with "an unwritable CSV names the file" "could not write '$work/no/dir/b.csv'" bench --scenes quad --size 32x24 --frames 1 --csv "$work/no/dir/b.csv"
+check "an unwritable CSV fails before any scene is measured" bash -c "! '$specula' bench --scenes quad --size 32x24 --frames 1 --json '$work/no/dir/b.json' 2>&1 | grep -q 'bench \[1/1\]'"
 check "bench --help lists every option" bash -c "for o in scenes size frames cold-size no-reference csv json gl; do '$specula' bench --help | grep -q -- \"--\$o\" || exit 1; done"
 check "specula --help lists bench" bash -c "'$specula' --help | grep -q '^  bench'"
 finish

@@ -83,8 +83,7 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
         }
         const glm::dvec2 offset = toPixels(frame.view, glm::vec3(result.reflectionPoint), frame.width, frame.height) - exactPixel;
         errors.pixels.push_back(glm::length(offset));
-        errors.exactBySlot[slot] = exactPixel;
-        errors.offsetBySlot[slot] = offset;
+        errors.vertices.push_back({slot, exactPixel, offset});
       }
     }
   }

@@ -1,7 +1,6 @@
 #pragma once
 // The search's reflection points against the exact sphere solver (server/math), in screen pixels.
 #include <cstddef>
-#include <map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -15,10 +14,16 @@ namespace specula::bench {
 // the top row; pixel centres at half-integers). Meaningless for points behind the eye.
 glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world, int width, int height);
 
+// One vertex both the search and the exact solver call visible, on screen in pixels.
+struct MeasuredVertex {
+  std::size_t slot;    // its reflection slot
+  glm::dvec2 exact;    // exact R
+  glm::dvec2 offset;   // search R − exact R
+};
+
 struct ReflectionPointErrors {
-  std::vector<double> pixels;                      // |search R − exact R| for vertices both call visible
-  std::map<std::size_t, glm::dvec2> exactBySlot;   // exact R on screen, by reflection slot
-  std::map<std::size_t, glm::dvec2> offsetBySlot;  // search R − exact R on screen, by reflection slot
+  std::vector<double> pixels;            // |offset| of each measured vertex, in the order of `vertices`
+  std::vector<MeasuredVertex> vertices;
   int exactHiddenButSearchVisible = 0;  // reflected although no reflection point exists
   int searchHiddenButExactVisible = 0;  // dropped although its reflection is visible
 

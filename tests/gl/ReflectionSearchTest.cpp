@@ -160,7 +160,7 @@ TEST(ReflectionSearch, PartlyVisibleMirrorReflectsCorrectlyAtTheScreenEdge) {
 TEST(ReflectionSearch, VirtualVerticesMoveWithTheTruthAlongASmoothCameraPath) {
   Rig rig = makeRig("checker-sphere");
   ASSERT_TRUE(rig.renderer);
-  std::map<std::size_t, glm::dvec2> previousOffsets, previousExact;
+  std::map<std::size_t, bench::MeasuredVertex> previousBySlot;
   std::vector<double> errorJumps;
   double largestExcess = 0.0, largestMove = 0.0;
   for (int step = 0; step < 12; ++step) {  // the scene's camera orbit at 60 frames per second
@@ -168,17 +168,18 @@ TEST(ReflectionSearch, VirtualVerticesMoveWithTheTruthAlongASmoothCameraPath) {
     auto frame = rig.renderer->render(pose, 640, 480);
     ASSERT_TRUE(frame);
     const auto errors = measureReflectionPoints(*rig.renderer, pose, *frame);
-    for (const auto& [slot, offset] : errors.offsetBySlot) {
-      const auto previous = previousOffsets.find(slot);
-      if (previous == previousOffsets.end()) continue;
-      const glm::dvec2 exactMove = errors.exactBySlot.at(slot) - previousExact.at(slot);
-      const double searchMove = glm::length(exactMove + offset - previous->second);
+    std::map<std::size_t, bench::MeasuredVertex> bySlot;
+    for (const bench::MeasuredVertex& vertex : errors.vertices) {
+      bySlot[vertex.slot] = vertex;
+      const auto previous = previousBySlot.find(vertex.slot);
+      if (previous == previousBySlot.end()) continue;
+      const glm::dvec2 exactMove = vertex.exact - previous->second.exact;
+      const double searchMove = glm::length(exactMove + vertex.offset - previous->second.offset);
       largestMove = std::max(largestMove, searchMove);
       largestExcess = std::max(largestExcess, searchMove - glm::length(exactMove));
-      errorJumps.push_back(glm::length(offset - previous->second));
+      errorJumps.push_back(glm::length(vertex.offset - previous->second.offset));
     }
-    previousOffsets = errors.offsetBySlot;
-    previousExact = errors.exactBySlot;
+    previousBySlot = std::move(bySlot);
   }
   ASSERT_GT(errorJumps.size(), 1000u);
   EXPECT_GT(largestMove, 0.5) << "the camera moved, so reflections must move";

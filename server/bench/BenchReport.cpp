@@ -17,6 +17,14 @@ std::string number(double value, int decimals) {
   return text;
 }
 
+// Three significant digits: reflection-point errors span 1e-5 px (exact refinement) to pixels.
+std::string significant(double value) {
+  if (!std::isfinite(value)) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
 std::string optionalNumber(const std::optional<double>& value, int decimals) {
   return value ? number(*value, decimals) : "";
 }
@@ -61,9 +69,9 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"unsolved", std::to_string(r.unsolvedPerFrame)});
   const auto& e = r.pointError;
   f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
-  f.push_back({"point_error_mean_px", e ? number(e->mean, 4) : ""});
-  f.push_back({"point_error_p99_px", e ? number(e->p99, 4) : ""});
-  f.push_back({"point_error_max_px", e ? number(e->maximum, 4) : ""});
+  f.push_back({"point_error_mean_px", e ? significant(e->mean) : ""});
+  f.push_back({"point_error_p99_px", e ? significant(e->p99) : ""});
+  f.push_back({"point_error_max_px", e ? significant(e->maximum) : ""});
   f.push_back({"misjudged_hidden", e ? std::to_string(e->misjudgedHidden) : ""});
   f.push_back({"misjudged_visible", e ? std::to_string(e->misjudgedVisible) : ""});
   const auto& c = r.reference;
@@ -130,7 +138,7 @@ std::string formatJson(std::span<const SceneBenchResult> results) {
 std::string formatTable(std::span<const SceneBenchResult> results) {
   std::string table;
   char line[512];
-  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-22s | %-20s | %8s\n", "scene", "frame ms", "fps",
+  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-26s | %-20s | %8s\n", "scene", "frame ms", "fps",
                 "first", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms");
   table += line;
   for (const SceneBenchResult& r : results) {
@@ -138,9 +146,9 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
     const auto& c = r.reference;
     const std::string steps = number(r.warmSteps.mean, 1) + "/" + number(r.coldSteps.mean, 1) + "/" +
                               orDash(r.coldStepsLarge ? number(r.coldStepsLarge->mean, 1) : "");
-    const std::string error = e ? number(e->mean, 3) + "/" + number(e->p99, 3) + "/" + number(e->maximum, 3) : "-";
+    const std::string error = e ? significant(e->mean) + "/" + significant(e->p99) + "/" + significant(e->maximum) : "-";
     const std::string image = c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
-    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s | %-17s | %-22s | %-20s | %8s\n", r.scene.c_str(),
+    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s | %-17s | %-26s | %-20s | %8s\n", r.scene.c_str(),
                   number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
                   number(r.firstFrameMilliseconds, 0).c_str(), steps.c_str(), error.c_str(), image.c_str(),
                   orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str());

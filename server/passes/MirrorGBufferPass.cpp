@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "math/Transform.h"
+#include "passes/QuadricUniforms.h"
 
 namespace specula::passes {
 
@@ -88,16 +89,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     const glm::mat3 normalToWorld = math::normalMatrix(objectToWorld);
     program_.set("objectToWorld", objectToWorld);
     program_.set("normalToWorld", normalToWorld);
-    // The exact surface where one is known and the mesh is the whole closed mirror.
-    const scene::MirrorInfo& info = *frame.scene.objects[mirror->mirrorObject].mirror;
-    const bool analytic = info.analytic.has_value() && info.closed;
-    program_.set("analytic", analytic ? 1 : 0);
-    if (analytic) {
-      program_.set("worldToObject", glm::inverse(objectToWorld));
-      program_.set("objectNormalToWorld", normalToWorld);
-      program_.set("quadricCenter", info.analytic->center);
-      program_.set("quadricRadii", info.analytic->radii);
-    }
+    setMirrorQuadric(program_, *frame.scene.objects[mirror->mirrorObject].mirror, objectToWorld);
     frame.meshes.draw(frame.searchMesh(mirror->mirrorObject));
   }
   gl.Disable(GL_SCISSOR_TEST);

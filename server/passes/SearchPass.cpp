@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "passes/QuadricUniforms.h"
+
 namespace specula::passes {
 
 namespace {
@@ -40,6 +42,8 @@ void SearchPass::execute(const FrameContext& frame) {
 
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     program_.set("layer", mirror->layer);
+    setMirrorQuadric(program_, *frame.scene.objects[mirror->mirrorObject].mirror,
+                     frame.pose.objectToWorld[mirror->mirrorObject]);
     for (const ReflectionSlotRange& range : mirror->reflected) {
       const scene::SceneObject& object = frame.scene.objects[range.object];
       const auto vertexCount = static_cast<GLuint>(frame.scene.meshes[object.mesh].vertices.size());

@@ -4,6 +4,7 @@
 // still on the mirror, else coarse-to-fine down the G-buffer pyramid; then refine below the texel.
 layout(local_size_x = 64) in;
 
+#include "common/quadric.glsl"
 #include "common/reflection.glsl"
 #include "common/reflected-vertex-buffer.glsl"
 
@@ -116,11 +117,15 @@ bool surfaceAt(vec2 coordinate, out vec3 position, out vec3 normal) {
 
 // Tangential part of the bisector: zero at the reflection point. Unlike 1 − N·B it keeps full
 // float precision near the solution, so it can drive a Gauss–Newton step.
+vec3 tangentialBisector(vec3 position, vec3 normal) {
+  vec3 b = normalize(normalize(eyePosition - position) + normalize(vertexWorld - position));
+  return b - dot(b, normal) * normal;
+}
+
 bool residualAt(vec2 coordinate, out vec3 residual) {
   vec3 p, n;
   if (!surfaceAt(coordinate, p, n)) return false;
-  vec3 b = normalize(normalize(eyePosition - p) + normalize(vertexWorld - p));
-  residual = b - dot(b, n) * n;
+  residual = tangentialBisector(p, n);
   return true;
 }
 
@@ -153,6 +158,53 @@ vec2 refine(ivec2 texel) {
   return x;
 }
 
+vec3 tangentialBisectorOnQuadric(vec3 unitPoint) {
+  vec3 p, n;
+  quadricSurface(unitPoint, p, n);
+  return tangentialBisector(p, n);
+}
+
+// Gauss–Newton on the exact surface of an analytic mirror, from the climb's texel, in coordinates
+// of the unit sphere's tangent plane at the current point: unlike G-buffer coordinates they stay
+// well conditioned up to the silhouette, where one texel spans a wide arc of the surface and the
+// bilinear surface strays from the true one.
+void refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
+  vec3 unitEye = toUnitSpace(eyePosition);
+  // Central-difference step, radians on the unit sphere: below the vertex's height above the
+  // surface, over which the residual turns when the vertex nearly touches the mirror.
+  float h = clamp(0.25 * (length(toUnitSpace(vertexWorld)) - 1.0), 1e-5, 1e-3);
+  vec3 u = normalize(toUnitSpace(start));
+  for (int iteration = 0; iteration < 24; ++iteration) {  // a texel of a small mirror spans a wide arc
+    vec3 t1 = normalize(cross(u, abs(u.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+    vec3 t2 = cross(u, t1);
+    vec3 r0 = tangentialBisectorOnQuadric(u);
+    vec3 jx = (tangentialBisectorOnQuadric(normalize(u + h * t1)) - tangentialBisectorOnQuadric(normalize(u - h * t1))) / (2.0 * h);
+    vec3 jy = (tangentialBisectorOnQuadric(normalize(u + h * t2)) - tangentialBisectorOnQuadric(normalize(u - h * t2))) / (2.0 * h);
+    mat2 normalMatrix = mat2(dot(jx, jx), dot(jx, jy), dot(jx, jy), dot(jy, jy));
+    if (abs(determinant(normalMatrix)) < 1e-30) break;
+    vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));
+    if (length(step) > 0.25) step = 0.25 * normalize(step);
+    // Backtracking: halve the step until it stays visible and lowers the residual, which turns
+    // sharply when the vertex nearly touches the mirror and full steps would overshoot. Steps under
+    // 0.03 rad are trusted: near grazing points the residual does not fall monotonically along them,
+    // and testing them stopped convergence early.
+    vec3 next = normalize(u + step.x * t1 + step.y * t2);
+    int halving = 0;
+    for (; halving < 12; ++halving) {
+      if (facesEye(next, unitEye)) {
+        vec3 r1 = tangentialBisectorOnQuadric(next);
+        if (dot(r1, r1) < dot(r0, r0) || length(step) < 0.03) break;
+      }
+      step *= 0.5;
+      next = normalize(u + step.x * t1 + step.y * t2);
+    }
+    if (halving == 12) break;
+    u = next;
+    if (length(step) < 1e-6) break;  // converged to float precision
+  }
+  quadricSurface(u, position, normal);
+}
+
 void main() {
   uint index = gl_GlobalInvocationID.x;
   if (index >= vertexCount) return;
@@ -180,7 +232,9 @@ void main() {
 
   ReflectedVertex result;
   vec3 r, n;
-  if (value <= kInvalid || !surfaceAt(refine(texel), r, n)) {
+  if (value > kInvalid && analytic != 0) {
+    refineOnQuadric(texelFetch(gbufferPosition, ivec3(texel, layer), 0).xyz, r, n);
+  } else if (value <= kInvalid || !surfaceAt(refine(texel), r, n)) {
     vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
     r = p.xyz;
     n = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
@@ -189,13 +243,22 @@ void main() {
   if ((flags & kReflectionUnsolved) != 0) {
     result.virtualPosition = vec4(0.0);
   } else {
-    // Behind the tangent plane at the best point: region C (Estalella et al. 2006, §5.1). The climb
-    // has reached the silhouette; mirroring across its tangent plane (not the paper's eq. 1, which
-    // lands inside the silhouette and smears) projects just outside it. A visible vertex goes on the
-    // eye's ray through R instead: the same point when R is exact, but it needs no normal, which
-    // mirroring would magnify by about 2|V − R| at grazing reflection points.
-    bool hidden = dot(vertexWorld - r, n) < 0.0;
-    if (hidden) flags |= kReflectionHidden;
+    // Behind the mirror: region C (Estalella et al. 2006, §5.1), exactly for an analytic mirror,
+    // else behind the tangent plane at the best point, where the climb has reached the silhouette.
+    // A hidden vertex is mirrored across the silhouette's tangent plane (not the paper's eq. 1,
+    // which lands inside the silhouette and smears), which projects it just outside; for an
+    // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
+    // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
+    // which mirroring would magnify by about 2|V − R| at grazing reflection points.
+    bool hidden = analytic != 0 ? behindQuadric(eyePosition, vertexWorld) : dot(vertexWorld - r, n) < 0.0;
+    if (hidden) {
+      flags |= kReflectionHidden;
+      vec3 silhouette, silhouetteNormal;
+      if (analytic != 0 && silhouettePointToward(eyePosition, vertexWorld, silhouette, silhouetteNormal)) {
+        r = silhouette;
+        n = silhouetteNormal;
+      }
+    }
     result.virtualPosition = vec4(hidden ? mirrorAcrossPlane(r, n, vertexWorld) : virtualVertex(eyePosition, r, vertexWorld), 1.0);
   }
   result.reflectionPoint = vec4(r, 1.0);

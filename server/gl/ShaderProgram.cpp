@@ -1,6 +1,7 @@
 #include "gl/ShaderProgram.h"
 
 #include <glm/gtc/type_ptr.hpp>
+#include <set>
 #include <utility>
 
 #include "gl/EmbeddedShaders.h"
@@ -11,7 +12,9 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 8;
 
-Result<std::string> expand(std::string_view file, int depth) {
+// Inlines `#include "file"` lines; each file is included once per shader, as with #pragma once.
+Result<std::string> expand(std::string_view file, int depth, std::set<std::string_view>& included) {
+  if (!included.insert(file).second) return std::string();
   const auto& files = embeddedShaderFiles();
   const auto found = files.find(file);
   if (found == files.end()) return Error{"shader file shaders/" + std::string(file) + " is not embedded (rebuild?)"};
@@ -26,9 +29,9 @@ Result<std::string> expand(std::string_view file, int depth) {
     if (line.starts_with(kInclude)) {
       const std::size_t close = line.find('"', kInclude.size());
       if (close == std::string_view::npos) return Error{"shaders/" + std::string(file) + ": malformed #include"};
-      auto included = expand(line.substr(kInclude.size(), close - kInclude.size()), depth + 1);
-      if (!included) return included;
-      out += included.value();
+      auto expanded = expand(line.substr(kInclude.size(), close - kInclude.size()), depth + 1, included);
+      if (!expanded) return expanded;
+      out += expanded.value();
     } else {
       out += line;
     }
@@ -55,7 +58,10 @@ std::string infoLog(const GlApi& gl, GLuint object, bool isProgram) {
 
 }  // namespace
 
-Result<std::string> expandShaderSource(std::string_view file) { return expand(file, 0); }
+Result<std::string> expandShaderSource(std::string_view file) {
+  std::set<std::string_view> included;
+  return expand(file, 0, included);
+}
 
 Result<ShaderProgram> ShaderProgram::build(const GlApi& gl, std::initializer_list<std::string_view> files) {
   ShaderProgram program(gl, gl.CreateProgram());

@@ -21,29 +21,37 @@ Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
 std::span<const std::string_view> SearchPass::reads() const { return kReads; }
 std::span<const std::string_view> SearchPass::writes() const { return kWrites; }
 
+void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  gl.ActiveTexture(GL_TEXTURE0);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.positionTexture());
+  gl.ActiveTexture(GL_TEXTURE1);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.normalTexture());
+  gl.ActiveTexture(GL_TEXTURE0);
+  program.set("gbufferPosition", 0);
+  program.set("gbufferNormal", 1);
+  program.set("coarseLevel", frame.reflections.coarseLevel());
+  program.set("eyePosition", frame.pose.camera.eye);
+  program.set("maxWalkSteps", frame.settings.maxWalkSteps);
+}
+
+void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame, const MirrorSlots& mirror) {
+  program.set("layer", mirror.layer);
+  setMirrorQuadric(program, *frame.scene.objects[mirror.mirrorObject].mirror, frame.pose.objectToWorld[mirror.mirrorObject]);
+}
+
 void SearchPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   ReflectionResources& resources = frame.reflections;
   resources.resetStatistics();
   program_.use();
-  gl.ActiveTexture(GL_TEXTURE0);
-  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.positionTexture());
-  gl.ActiveTexture(GL_TEXTURE1);
-  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.normalTexture());
-  gl.ActiveTexture(GL_TEXTURE0);
-  program_.set("gbufferPosition", 0);
-  program_.set("gbufferNormal", 1);
-  program_.set("coarseLevel", resources.coarseLevel());
-  program_.set("eyePosition", frame.pose.camera.eye);
+  setSearchUniforms(program_, frame);
   program_.set("useCoherence", frame.settings.coherence ? 1 : 0);
-  program_.set("maxWalkSteps", frame.settings.maxWalkSteps);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resources.reflectedVertices());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, resources.statistics());
 
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
-    program_.set("layer", mirror->layer);
-    setMirrorQuadric(program_, *frame.scene.objects[mirror->mirrorObject].mirror,
-                     frame.pose.objectToWorld[mirror->mirrorObject]);
+    setSearchMirror(program_, frame, *mirror);
     for (const ReflectionSlotRange& range : mirror->reflected) {
       const scene::SceneObject& object = frame.scene.objects[range.object];
       const auto vertexCount = static_cast<GLuint>(frame.scene.meshes[object.mesh].vertices.size());

@@ -8,6 +8,10 @@
 
 namespace specula::passes {
 
+// The uniforms of shaders/common/search-core.glsl: per frame, then per mirror.
+void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame);
+void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame, const MirrorSlots& mirror);
+
 class SearchPass final : public Pass {
  public:
   static Result<std::unique_ptr<SearchPass>> create(const gl::GlApi& gl);

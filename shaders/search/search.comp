@@ -1,280 +1,28 @@
 #version 430 core
-// Reflection-point search (Estalella et al. 2006) for the vertices of one object in one mirror:
-// hill-climb N·B over the mirror's G-buffer in 3×3 windows, from last frame's texel when it is
-// still on the mirror, else coarse-to-fine down the G-buffer pyramid; then refine below the texel.
+// Reflection-point search (common/search-core.glsl) for the vertices of one object in one mirror,
+// each seeded with its texel from last frame (coherence).
 layout(local_size_x = 64) in;
 
-#include "common/quadric.glsl"
-#include "common/reflection.glsl"
+#include "common/search-core.glsl"
 #include "common/reflected-vertex-buffer.glsl"
+#include "common/search-statistics.glsl"
 
 layout(std430, binding = 0) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
 };
 
-layout(std430, binding = 2) buffer SearchStatistics {
-  uint searched, hidden, unsolved, coldStarts;
-  uint totalSteps, maxSteps, warmSteps, coldSteps;
-};
-
-uniform sampler2DArray gbufferPosition;  // w > 0 on mirror texels
-uniform sampler2DArray gbufferNormal;
-uniform int layer;
-uniform int coarseLevel;       // pyramid level scanned exhaustively on a cold start
 uniform mat4 objectToWorld;
-uniform vec3 eyePosition;
 uniform uint firstSlot;
 uniform uint vertexCount;
-uniform int useCoherence;      // 0 forces cold starts (first frame, camera jump, benchmarks)
-uniform int maxWalkSteps;
-
-const float kInvalid = -3.0;   // below any reflectionObjective
-const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
-                                      ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
-
-vec3 vertexWorld;
-
-float objectiveAt(ivec2 texel, int level) {
-  ivec2 size = textureSize(gbufferPosition, level).xy;
-  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return kInvalid;
-  vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), level);
-  if (p.w <= 0.0) return kInvalid;
-  return reflectionObjective(p.xyz, texelFetch(gbufferNormal, ivec3(texel, layer), level).xyz, eyePosition,
-                             vertexWorld);
-}
-
-// Moves to the best of the 3×3 window until the centre is best; each window examined is a step.
-ivec2 climb(ivec2 texel, int level, int stepLimit, inout int steps, out float value) {
-  value = objectiveAt(texel, level);
-  for (int i = 0; i < stepLimit; ++i) {
-    ++steps;
-    ivec2 next = texel;
-    float nextValue = value;
-    for (int k = 0; k < 8; ++k) {
-      float candidate = objectiveAt(texel + kNeighbours[k], level);
-      if (candidate > nextValue) {
-        nextValue = candidate;
-        next = texel + kNeighbours[k];
-      }
-    }
-    if (next == texel) break;
-    texel = next;
-    value = nextValue;
-  }
-  return texel;
-}
-
-// Exhaustive scan of the coarse level, then one climb per finer level (children of the winner).
-ivec2 coldSearch(inout int steps, out float value) {
-  ivec2 size = textureSize(gbufferPosition, coarseLevel).xy;
-  ivec2 best = ivec2(0);
-  value = kInvalid;
-  for (int y = 0; y < size.y; ++y) {
-    for (int x = 0; x < size.x; ++x) {
-      float candidate = objectiveAt(ivec2(x, y), coarseLevel);
-      if (candidate > value) {
-        value = candidate;
-        best = ivec2(x, y);
-      }
-    }
-  }
-  steps += (size.x * size.y + 8) / 9;  // counted in 3×3 windows, like climb steps
-  for (int level = coarseLevel - 1; level >= 0; --level) best = climb(best * 2, level, maxWalkSteps, steps, value);
-  return best;
-}
-
-// Bilinear surface between texel centres (texel i's centre at coordinate i); false off the mirror.
-// Corners with no weight are not needed; one missing corner is completed as a parallelogram from
-// the other three, so refinement reaches the silhouette, where grazing reflection points live.
-bool surfaceAt(vec2 coordinate, out vec3 position, out vec3 normal) {
-  ivec2 base = ivec2(floor(coordinate));
-  vec2 f = coordinate - vec2(base);
-  const ivec2 corner[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(1, 1));
-  float weight[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-  vec3 p[4], n[4];
-  bool present[4];
-  int missing = -1;
-  for (int i = 0; i < 4; ++i) {
-    ivec2 at = base + corner[i];
-    vec4 texel = texelFetch(gbufferPosition, ivec3(at, layer), 0);
-    present[i] = texel.w > 0.0 && all(lessThan(at, textureSize(gbufferPosition, 0).xy)) && all(greaterThanEqual(at, ivec2(0)));
-    p[i] = present[i] ? texel.xyz : vec3(0.0);
-    n[i] = present[i] ? texelFetch(gbufferNormal, ivec3(at, layer), 0).xyz : vec3(0.0);
-    if (present[i] || weight[i] == 0.0) continue;
-    if (missing >= 0) return false;
-    missing = i;
-  }
-  if (missing >= 0) {  // the corner opposite the missing one is shared by both its neighbours
-    int opposite = 3 - missing, a = missing ^ 1, b = missing ^ 2;
-    if (!present[opposite] || !present[a] || !present[b]) return false;
-    p[missing] = p[a] + p[b] - p[opposite];
-    n[missing] = n[a] + n[b] - n[opposite];
-  }
-  position = weight[0] * p[0] + weight[1] * p[1] + weight[2] * p[2] + weight[3] * p[3];
-  normal = normalize(weight[0] * n[0] + weight[1] * n[1] + weight[2] * n[2] + weight[3] * n[3]);
-  return true;
-}
-
-// Tangential part of the bisector: zero at the reflection point. Unlike 1 − N·B it keeps full
-// float precision near the solution, so it can drive a Gauss–Newton step.
-vec3 tangentialBisector(vec3 position, vec3 normal) {
-  vec3 b = normalize(normalize(eyePosition - position) + normalize(vertexWorld - position));
-  return b - dot(b, normal) * normal;
-}
-
-bool residualAt(vec2 coordinate, out vec3 residual) {
-  vec3 p, n;
-  if (!surfaceAt(coordinate, p, n)) return false;
-  residual = tangentialBisector(p, n);
-  return true;
-}
-
-// Derivative of the residual per texel along `axis`: central where both sides are on the mirror,
-// one-sided at the silhouette.
-bool residualSlope(vec2 x, vec3 r0, vec2 axis, out vec3 slope) {
-  vec3 plus, minus;
-  bool hasPlus = residualAt(x + 0.5 * axis, plus), hasMinus = residualAt(x - 0.5 * axis, minus);
-  if (hasPlus && hasMinus) slope = plus - minus;
-  else if (hasPlus) slope = 2.0 * (plus - r0);
-  else if (hasMinus) slope = 2.0 * (r0 - minus);
-  return hasPlus || hasMinus;
-}
-
-// Three Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's winner.
-vec2 refine(ivec2 texel) {
-  vec2 x = vec2(texel);
-  for (int iteration = 0; iteration < 3; ++iteration) {
-    vec3 r0, jx, jy;
-    if (!residualAt(x, r0) || !residualSlope(x, r0, vec2(1.0, 0.0), jx) || !residualSlope(x, r0, vec2(0.0, 1.0), jy)) break;
-    mat2 normalMatrix = mat2(dot(jx, jx), dot(jx, jy), dot(jx, jy), dot(jy, jy));
-    if (abs(determinant(normalMatrix)) < 1e-30) break;
-    vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));
-    if (length(step) > 1.0) step = normalize(step);
-    vec2 next = clamp(x + step, vec2(texel) - 2.5, vec2(texel) + 2.5);
-    vec3 unused;
-    if (!residualAt(next, unused)) break;
-    x = next;
-  }
-  return x;
-}
-
-vec3 tangentialBisectorOnQuadric(vec3 unitPoint) {
-  vec3 p, n;
-  quadricSurface(unitPoint, p, n);
-  return tangentialBisector(p, n);
-}
-
-// Gauss–Newton on the exact surface of an analytic mirror, from the climb's texel, in coordinates
-// of the unit sphere's tangent plane at the current point: unlike G-buffer coordinates they stay
-// well conditioned up to the silhouette, where one texel spans a wide arc of the surface and the
-// bilinear surface strays from the true one.
-void refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
-  vec3 unitEye = toUnitSpace(eyePosition);
-  // Central-difference step, radians on the unit sphere: below the vertex's height above the
-  // surface, over which the residual turns when the vertex nearly touches the mirror.
-  float h = clamp(0.25 * (length(toUnitSpace(vertexWorld)) - 1.0), 1e-5, 1e-3);
-  vec3 u = normalize(toUnitSpace(start));
-  for (int iteration = 0; iteration < 24; ++iteration) {  // a texel of a small mirror spans a wide arc
-    vec3 t1 = normalize(cross(u, abs(u.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
-    vec3 t2 = cross(u, t1);
-    vec3 r0 = tangentialBisectorOnQuadric(u);
-    vec3 jx = (tangentialBisectorOnQuadric(normalize(u + h * t1)) - tangentialBisectorOnQuadric(normalize(u - h * t1))) / (2.0 * h);
-    vec3 jy = (tangentialBisectorOnQuadric(normalize(u + h * t2)) - tangentialBisectorOnQuadric(normalize(u - h * t2))) / (2.0 * h);
-    mat2 normalMatrix = mat2(dot(jx, jx), dot(jx, jy), dot(jx, jy), dot(jy, jy));
-    if (abs(determinant(normalMatrix)) < 1e-30) break;
-    vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));
-    if (length(step) > 0.25) step = 0.25 * normalize(step);
-    // Backtracking: halve the step until it stays visible and lowers the residual, which turns
-    // sharply when the vertex nearly touches the mirror and full steps would overshoot. Steps under
-    // 0.03 rad are trusted: near grazing points the residual does not fall monotonically along them,
-    // and testing them stopped convergence early.
-    vec3 next = normalize(u + step.x * t1 + step.y * t2);
-    int halving = 0;
-    for (; halving < 12; ++halving) {
-      if (facesEye(next, unitEye)) {
-        vec3 r1 = tangentialBisectorOnQuadric(next);
-        if (dot(r1, r1) < dot(r0, r0) || length(step) < 0.03) break;
-      }
-      step *= 0.5;
-      next = normalize(u + step.x * t1 + step.y * t2);
-    }
-    if (halving == 12) break;
-    u = next;
-    if (length(step) < 1e-6) break;  // converged to float precision
-  }
-  quadricSurface(u, position, normal);
-}
+uniform int useCoherence;  // 0 forces cold starts (first frame, camera jump, benchmarks)
 
 void main() {
   uint index = gl_GlobalInvocationID.x;
   if (index >= vertexCount) return;
   uint slot = firstSlot + index;
-  vertexWorld = (objectToWorld * vec4(meshVertex[8u * index], meshVertex[8u * index + 1u],
-                                      meshVertex[8u * index + 2u], 1.0)).xyz;
-
-  int steps = 0, flags = 0;
-  float value = kInvalid;
-  ivec2 texel = reflected[slot].state.xy;
-  bool warm = useCoherence != 0 && (reflected[slot].state.w & kReflectionUnsolved) == 0 &&
-              objectiveAt(texel, 0) > kInvalid;
-  if (warm) texel = climb(texel, 0, maxWalkSteps, steps, value);
-  if (!warm || steps >= maxWalkSteps) {  // no seed, or the seed was too far: start from the pyramid
-    int coldSteps = 0;
-    float coldValue;
-    ivec2 coldTexel = coldSearch(coldSteps, coldValue);
-    steps += coldSteps;
-    flags |= kReflectionColdStart;
-    if (coldValue > value) {
-      texel = coldTexel;
-      value = coldValue;
-    }
-  }
-
-  ReflectedVertex result;
-  vec3 r, n;
-  if (value > kInvalid && analytic != 0) {
-    refineOnQuadric(texelFetch(gbufferPosition, ivec3(texel, layer), 0).xyz, r, n);
-  } else if (value <= kInvalid || !surfaceAt(refine(texel), r, n)) {
-    vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
-    r = p.xyz;
-    n = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
-    if (value <= kInvalid) flags |= kReflectionUnsolved;
-  }
-  if ((flags & kReflectionUnsolved) != 0) {
-    result.virtualPosition = vec4(0.0);
-  } else {
-    // Behind the mirror: region C (Estalella et al. 2006, §5.1), exactly for an analytic mirror,
-    // else behind the tangent plane at the best point, where the climb has reached the silhouette.
-    // A hidden vertex is mirrored across the silhouette's tangent plane (not the paper's eq. 1,
-    // which lands inside the silhouette and smears), which projects it just outside; for an
-    // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
-    // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
-    // which mirroring would magnify by about 2|V − R| at grazing reflection points.
-    bool hidden = analytic != 0 ? behindQuadric(eyePosition, vertexWorld) : dot(vertexWorld - r, n) < 0.0;
-    if (hidden) {
-      flags |= kReflectionHidden;
-      vec3 silhouette, silhouetteNormal;
-      if (analytic != 0 && silhouettePointToward(eyePosition, vertexWorld, silhouette, silhouetteNormal)) {
-        r = silhouette;
-        n = silhouetteNormal;
-      }
-    }
-    result.virtualPosition = vec4(hidden ? mirrorAcrossPlane(r, n, vertexWorld) : virtualVertex(eyePosition, r, vertexWorld), 1.0);
-  }
-  result.reflectionPoint = vec4(r, 1.0);
-  result.reflectionNormal = vec4(n, 0.0);
-  result.state = ivec4(texel, steps, flags);
+  vec3 vertex = (objectToWorld * vec4(meshVertex[8u * index], meshVertex[8u * index + 1u], meshVertex[8u * index + 2u], 1.0)).xyz;
+  ReflectedVertex last = reflected[slot];
+  ReflectedVertex result = searchReflection(vertex, last.state.xy, useCoherence != 0 && (last.state.w & kReflectionUnsolved) == 0);
   reflected[slot] = result;
-
-  atomicAdd(searched, 1u);
-  atomicAdd(totalSteps, uint(steps));
-  atomicMax(maxSteps, uint(steps));
-  if ((flags & kReflectionHidden) != 0) atomicAdd(hidden, 1u);
-  if ((flags & kReflectionUnsolved) != 0) atomicAdd(unsolved, 1u);
-  if ((flags & kReflectionColdStart) != 0) {
-    atomicAdd(coldStarts, 1u);
-    atomicAdd(coldSteps, uint(steps));
-  } else {
-    atomicAdd(warmSteps, uint(steps));
-  }
+  countSearch(result.state.z, result.state.w);
 }

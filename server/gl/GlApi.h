@@ -53,6 +53,10 @@ namespace specula::gl {
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                                         \
   X(PFNGLBINDBUFFERPROC, BindBuffer)                                                               \
   X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                                       \
+  X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                                     \
+  X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData)                                                 \
+  X(PFNGLBEGINTRANSFORMFEEDBACKPROC, BeginTransformFeedback)                                       \
+  X(PFNGLENDTRANSFORMFEEDBACKPROC, EndTransformFeedback)                                           \
   X(PFNGLBUFFERDATAPROC, BufferData)                                                               \
   X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                         \
   X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                                                   \
@@ -81,6 +85,7 @@ namespace specula::gl {
   X(PFNGLUNIFORM1UIPROC, Uniform1ui)                                                               \
   X(PFNGLUNIFORM1FPROC, Uniform1f)                                                                 \
   X(PFNGLUNIFORM2IPROC, Uniform2i)                                                                 \
+  X(PFNGLUNIFORM2FPROC, Uniform2f)                                                                 \
   X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                                               \
   X(PFNGLUNIFORM4FVPROC, Uniform4fv)                                                               \
   X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                   \

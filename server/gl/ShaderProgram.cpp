@@ -123,6 +123,9 @@ void ShaderProgram::set(const char* name, const glm::ivec2& value) const {
   gl_->Uniform2i(gl_->GetUniformLocation(id_, name), value.x, value.y);
 }
 void ShaderProgram::set(const char* name, float value) const { gl_->Uniform1f(gl_->GetUniformLocation(id_, name), value); }
+void ShaderProgram::set(const char* name, const glm::vec2& value) const {
+  gl_->Uniform2f(gl_->GetUniformLocation(id_, name), value.x, value.y);
+}
 void ShaderProgram::set(const char* name, const glm::vec3& value) const {
   gl_->Uniform3fv(gl_->GetUniformLocation(id_, name), 1, glm::value_ptr(value));
 }

@@ -32,7 +32,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds
     if (!mirror.reflected.empty() && boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f))
       plan.mirrors.push_back(&mirror);
   if (plan.mirrors.empty()) return plan;
-  plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "gbuffer-pyramid", "search", "virtual-objects"});
+  plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "gbuffer-pyramid", "search"});
+  plan.tessellate = settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
+  if (plan.tessellate) plan.passes.push_back("tessellation");
+  plan.passes.push_back("virtual-objects");
   return plan;
 }
 

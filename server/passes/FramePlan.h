@@ -14,6 +14,7 @@ namespace specula::passes {
 struct FramePlan {
   std::vector<std::string_view> passes;         // pass names in execution order
   std::vector<const MirrorSlots*> mirrors;      // visible mirrors whose reflections are drawn
+  bool tessellate = false;                      // virtual objects come from the tessellation pass
 };
 
 // worldBounds: one box per scene object at this frame's pose. aspect = width / height.

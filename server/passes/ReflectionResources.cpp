@@ -13,7 +13,7 @@ TexelRect TexelRect::united(const TexelRect& other) const {
 
 ReflectionResources::ReflectionResources(const gl::GlApi& gl, const ReflectionSlots& slots)
     : gl_(&gl), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
-      statistics_(gl) {
+      statistics_(gl), tessellation_(gl) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, reflected_.id());
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(slots.slotCount, 1) * sizeof(ReflectedVertex)),
                 nullptr, GL_DYNAMIC_COPY);

@@ -10,6 +10,7 @@
 #include "gl/GlObject.h"
 #include "passes/ReflectedVertex.h"
 #include "passes/ReflectionSlots.h"
+#include "passes/TessellationBuffers.h"
 
 namespace specula::passes {
 
@@ -41,6 +42,7 @@ class ReflectionResources {
   GLuint depthTexture() const { return depth_.id(); }
   GLuint reflectedVertices() const { return reflected_.id(); }
   GLuint statistics() const { return statistics_.id(); }
+  TessellationBuffers& tessellation() { return tessellation_; }
 
   // The texels a mirror covers now (after the G-buffer pass), and those that changed this frame:
   // last frame's and this frame's cover together, which the pyramid must rebuild.
@@ -62,6 +64,7 @@ class ReflectionResources {
   gl::GlFramebuffer framebuffer_;
   gl::GlBuffer reflected_, statistics_;
   std::vector<TexelRect> covered_, changed_;
+  TessellationBuffers tessellation_;
 };
 
 }  // namespace specula::passes

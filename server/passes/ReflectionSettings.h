@@ -7,6 +7,25 @@ enum class ReflectionMethod {
   Search,  // virtual objects from the screen-space reflection-point search (Estalella et al. 2006)
 };
 
+// Adaptive tessellation of reflected geometry (Szabo 2013, ch. 4), so virtual edges curve.
+enum class TessellationMode {
+  None,       // virtual triangles straight between their corners' reflections
+  Paper,      // Szabo's loop: a triangle whose worst edge exceeds the threshold splits 1→4
+  CrackFree,  // each edge decided alone and split triangles follow conforming patterns: no T-junctions
+};
+
+enum class TessellationMetric {
+  Angle,   // Szabo's edge error 1 − (N_mid·b + 1)/2, from 0 to 1
+  Pixels,  // where the rasterizer puts the edge midpoint against where its true reflection projects
+};
+
+struct TessellationSettings {
+  TessellationMode mode = TessellationMode::CrackFree;
+  TessellationMetric metric = TessellationMetric::Pixels;
+  float threshold = 1.0f;  // an edge splits when its error is at least this (0: always; Angle 1: never)
+  int maxLevel = 4;        // splits per original triangle at most: at most 4^maxLevel triangles each
+};
+
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;
   // Extra G-buffer border on each side, as a share of the frame size, so reflection points of a
@@ -15,6 +34,7 @@ struct ReflectionSettings {
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb
+  TessellationSettings tessellation;
 };
 
 }  // namespace specula::passes

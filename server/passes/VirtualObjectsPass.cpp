@@ -8,7 +8,7 @@
 namespace specula::passes {
 
 namespace {
-constexpr std::array<std::string_view, 2> kReads{"reflected-vertices", "color"};
+constexpr std::array<std::string_view, 3> kReads{"reflected-vertices", "tessellated-triangles", "color"};  // one of the first two
 constexpr std::array<std::string_view, 1> kWrites{"color"};
 // Virtual vertices lie a whole path (eye → mirror → object) away: push the far plane out.
 constexpr float kVirtualFarScale = 3.0f;
@@ -18,16 +18,30 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   auto objects = gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects.vert", "virtual-objects/virtual-objects.geom",
                                                "virtual-objects/virtual-objects.frag"});
   if (!objects) return Error{objects.error()};
+  auto tessellated = gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects-tessellated.vert", "virtual-objects/virtual-objects.geom",
+                                                   "virtual-objects/virtual-objects.frag"});
+  if (!tessellated) return Error{tessellated.error()};
   auto region = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/mirror-region.frag"});
   if (!region) return Error{region.error()};
   return std::unique_ptr<VirtualObjectsPass>(
-      new VirtualObjectsPass(gl, std::move(objects.value()), std::move(region.value())));
+      new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()), std::move(region.value())));
 }
 
 std::span<const std::string_view> VirtualObjectsPass::reads() const { return kReads; }
 std::span<const std::string_view> VirtualObjectsPass::writes() const { return kWrites; }
 
 void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const {
+  if (frame.plan.tessellate) {
+    const TessellationBuffers& tessellation = frame.reflections.tessellation();
+    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
+    frame.gl.BindVertexArray(emptyVertexArray_.id());
+    for (const TessellatedRange& range : tessellation.ranges()) {
+      if (range.mirrorObject != mirror.mirrorObject || range.triangles == 0) continue;
+      setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object].material]);
+      frame.gl.DrawArrays(GL_TRIANGLES, 3 * range.firstTriangle, 3 * range.triangles);
+    }
+    return;
+  }
   for (const ReflectionSlotRange& range : mirror.reflected) {
     const scene::SceneObject& object = frame.scene.objects[range.object];
     const glm::mat4& objectToWorld = frame.pose.objectToWorld[range.object];
@@ -51,9 +65,10 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BlendFunc(GL_ONE, GL_ONE);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
-  objects_.use();
-  objects_.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-  setSceneLighting(objects_, frame.scene);
+  const gl::ShaderProgram& objects = objectsProgram(frame);
+  objects.use();
+  objects.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+  setSceneLighting(objects, frame.scene);
 
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
@@ -69,16 +84,16 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 
     // 2. Depth of the nearest virtual surface, 3. shade only that surface, added over the mirror.
-    objects_.use();
-    objects_.set("reflectivity", reflectivity);
+    objects.use();
+    objects.set("reflectivity", reflectivity);
     gl.DepthFunc(GL_LESS);
-    objects_.set("depthOnly", 1);
+    objects.set("depthOnly", 1);
     drawObjects(frame, *mirror);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.Enable(GL_BLEND);
     gl.DepthMask(GL_FALSE);
     gl.DepthFunc(GL_EQUAL);
-    objects_.set("depthOnly", 0);
+    objects.set("depthOnly", 0);
     drawObjects(frame, *mirror);
 
     // 4. Where no virtual object landed, the mirror reflects the background.

@@ -21,11 +21,13 @@ class VirtualObjectsPass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram region)
-      : objects_(std::move(objects)), region_(std::move(region)), emptyVertexArray_(gl) {}
+  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region)
+      : objects_(std::move(objects)), tessellated_(std::move(tessellated)), region_(std::move(region)), emptyVertexArray_(gl) {}
   void drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const;
+  const gl::ShaderProgram& objectsProgram(const FrameContext& frame) const { return frame.plan.tessellate ? tessellated_ : objects_; }
 
-  gl::ShaderProgram objects_;
+  gl::ShaderProgram objects_;      // scene meshes at their search slots
+  gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles
   gl::ShaderProgram region_;
   gl::GlVertexArray emptyVertexArray_;  // the full-screen triangle needs no attributes
 };

@@ -12,6 +12,7 @@
 #include "passes/MirrorGBufferPass.h"
 #include "passes/ScenePass.h"
 #include "passes/SearchPass.h"
+#include "passes/TessellationPass.h"
 #include "passes/VirtualObjectsPass.h"
 
 namespace specula::render {
@@ -60,6 +61,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::
                         addPass(renderer->passes_, passes::MirrorGBufferPass::create(gl)),
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
                         addPass(renderer->passes_, passes::SearchPass::create(gl)),
+                        addPass(renderer->passes_, passes::TessellationPass::create(gl)),
                         addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl))})
     if (!status) return Error{status.error()};
   return renderer;
@@ -109,10 +111,11 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     passes_.find(plan.passes[i])->second->execute(frame);
     gl.QueryCounter(stamps[i + 1].id(), GL_TIMESTAMP);
   }
-  RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view};
+  RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view, {}};
   for (const passes::MirrorSlots* mirror : plan.mirrors) result.drawnMirrors.push_back(mirror->mirrorObject);
   gl.QueryCounter(stamps.back().id(), GL_TIMESTAMP);
   if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
+  if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();
 
   std::vector<GLuint64> times(stamps.size(), 0);
   for (std::size_t i = 0; i < stamps.size(); ++i) gl.GetQueryObjectui64v(stamps[i].id(), GL_QUERY_RESULT, &times[i]);

@@ -30,6 +30,7 @@ struct RenderedFrame {
   std::vector<std::size_t> drawnMirrors;  // scene object indices of the mirrors searched and drawn
   passes::SearchStatistics search;  // zero when no mirror was visible
   passes::FrameView view;           // the camera matrices used (for measuring in pixels)
+  passes::TessellationStatistics tessellation;  // empty when the frame was not tessellated
 };
 
 class Renderer {

@@ -109,8 +109,8 @@ TEST_P(CheckerFloorTest, ReportsEveryStageTimeAndRefusesImpossibleSizes) {
     names.push_back(stage.name);
     EXPECT_GE(stage.milliseconds, 0.0) << stage.name;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search", "virtual-objects",
-                                            "readback"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search", "tessellation",
+                                            "virtual-objects", "readback"}));
   EXPECT_EQ(frame->rgba.size(), 64u * 48u * 4u);
 
   auto tooLarge = (*renderer)->render(pose, 1 << 20, 16);

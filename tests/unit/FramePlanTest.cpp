@@ -1,6 +1,8 @@
 // The frame graph is plain data: which passes run for a view, decided without GL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "passes/FramePlan.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
@@ -19,8 +21,9 @@ std::vector<math::Bounds> worldBounds(const scene::Scene& scene, const scene::Sc
   return bounds;
 }
 
+// Default settings tessellate reflected geometry adaptively.
 const std::vector<std::string_view> kReflectionPasses{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search",
-                                                      "virtual-objects"};
+                                                      "tessellation", "virtual-objects"};
 
 }  // namespace
 
@@ -33,7 +36,23 @@ TEST(FramePlan, VisibleMirrorRunsTheReflectionPassesForEveryOtherReflectedObject
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, {});
   EXPECT_EQ(plan.passes, kReflectionPasses);
+  EXPECT_TRUE(plan.tessellate);
   ASSERT_EQ(plan.mirrors.size(), 1u);
+}
+
+TEST(FramePlan, TessellationOffOrAtLevelZeroRunsNoTessellationPass) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  for (const auto& [mode, level] : {std::pair{passes::TessellationMode::None, 4}, std::pair{passes::TessellationMode::Paper, 0}}) {
+    passes::ReflectionSettings settings;
+    settings.tessellation.mode = mode;
+    settings.tessellation.maxLevel = level;
+    const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings);
+    EXPECT_FALSE(plan.tessellate);
+    EXPECT_EQ(std::count(plan.passes.begin(), plan.passes.end(), "tessellation"), 0);
+    EXPECT_EQ(plan.passes.back(), "virtual-objects");
+  }
 }
 
 TEST(FramePlan, MirrorOutOfViewRunsOnlyTheScenePass) {

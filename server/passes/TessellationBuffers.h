@@ -1,0 +1,83 @@
+#pragma once
+// GPU buffers of adaptive tessellation (shaders/tessellation): two working lists that rounds
+// ping-pong between, the finished list the virtual-objects pass draws, the per-triangle split
+// decisions and the round's counters. Lists are triangle soups of TessellatedVertex records
+// (shaders/common/tessellated-vertex.glsl). Buffers grow on demand up to a cap; past the cap
+// triangles stop splitting, and the frame says so, instead of failing.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "gl/GlApi.h"
+#include "gl/GlObject.h"
+#include "passes/ReflectedVertex.h"
+
+namespace specula::passes {
+
+// The finished triangles of one reflected object in one mirror.
+struct TessellatedRange {
+  std::size_t mirrorObject = 0, object = 0;
+  GLint firstTriangle = 0;
+  GLsizei triangles = 0;
+};
+
+struct TessellationStatistics {
+  std::uint32_t inputTriangles = 0;                 // reflected objects' triangles, summed over mirrors
+  std::vector<std::uint32_t> trianglesPerRound;     // working triangles entering each round
+  std::uint32_t finishedTriangles = 0;              // triangles the virtual-objects pass draws
+  SearchStatistics midpointSearches;                // the searches for new edge midpoints
+  bool capped = false;                              // a list reached kMaxTriangles: splitting stopped early
+};
+
+class TessellationBuffers {
+ public:
+  static constexpr std::size_t kRecordBytes = 80;               // one TessellatedVertex
+  static constexpr std::size_t kTriangleBytes = 3 * kRecordBytes;
+  static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 16;  // one EdgeSplit
+  static constexpr std::size_t kMaxTriangles = std::size_t{1} << 20;  // per list: 240 MiB
+
+  explicit TessellationBuffers(const gl::GlApi& gl);
+
+  // Forgets last frame's lists and zeroes the statistics.
+  void beginFrame();
+  // Make room for `triangles` in working list `list` (content not kept) or, for split decisions,
+  // in the split buffer; false past kMaxTriangles.
+  bool reserveWorking(int list, std::size_t triangles);
+  bool reserveSplits(std::size_t triangles);
+  // Make room for `more` finished triangles after the current ones, keeping them.
+  bool reserveFinished(std::size_t more);
+
+  GLuint working(int list) const { return working_[list].buffer.id(); }
+  GLuint finished() const { return finished_.buffer.id(); }
+  GLuint splits() const { return splits_.buffer.id(); }
+  GLuint counters() const { return counters_.id(); }
+  GLuint midpointStatistics() const { return midpointStatistics_.id(); }
+  std::size_t finishedCount() const { return finishedCount_; }
+  void addFinished(std::size_t triangles) { finishedCount_ += triangles; }
+
+  // Zeroes, then after a split round reads, the round's two counters: children, unsplit.
+  void resetCounters();
+  std::pair<std::uint32_t, std::uint32_t> readCounters() const;
+
+  std::vector<TessellatedRange>& ranges() { return ranges_; }
+  const std::vector<TessellatedRange>& ranges() const { return ranges_; }
+  TessellationStatistics& statistics() { return statistics_; }
+  // Fills in the midpoint search totals (a GPU readback) and returns the frame's statistics.
+  const TessellationStatistics& finishStatistics();
+
+ private:
+  struct GrowingBuffer {
+    gl::GlBuffer buffer;
+    std::size_t capacityBytes = 0;
+  };
+  void reserve(GrowingBuffer& target, std::size_t bytes, std::size_t keepBytes);
+
+  const gl::GlApi* gl_;
+  GrowingBuffer working_[2], finished_, splits_;
+  gl::GlBuffer counters_, midpointStatistics_;
+  std::size_t finishedCount_ = 0;
+  std::vector<TessellatedRange> ranges_;
+  TessellationStatistics statistics_;
+};
+
+}  // namespace specula::passes

@@ -1,0 +1,8 @@
+// What the tessellation's split pass decides for one working triangle, for the emit pass: which
+// edges split and the new vertex on each (edge e runs from corner e to corner e + 1).
+#include "common/tessellated-vertex.glsl"
+
+struct EdgeSplit {
+  TessellatedVertex midpoint[3];
+  ivec4 mask;  // x: bit e set when edge e splits
+};

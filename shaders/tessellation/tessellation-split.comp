@@ -1,0 +1,107 @@
+#version 440 core
+// One round of adaptive tessellation (Szabo 2013, ch. 4), per working triangle: the error of each
+// edge, which edges split, and the reflection of each new edge midpoint, found by the same search
+// as scene vertices, seeded between its endpoints' texels.
+layout(local_size_x = 64) in;
+
+#include "common/search-core.glsl"
+#include "common/search-statistics.glsl"
+#include "common/edge-split.glsl"
+
+layout(std430, binding = 3) readonly buffer WorkingTriangles {
+  TessellatedVertex records[];
+};
+layout(std430, binding = 4) writeonly buffer EdgeSplits {
+  EdgeSplit splits[];
+};
+layout(std430, binding = 5) buffer TessellationCounters {
+  uint childTriangles;    // triangles the split ones become
+  uint unsplitTriangles;  // triangles that are finished this round
+};
+
+uniform uint triangleCount;
+uniform int crackFree;          // 1: each edge decided alone; 0: Szabo's worst edge splits all three
+uniform int pixelMetric;        // 1: error in pixels; 0: Szabo's angle error
+uniform float threshold;
+uniform mat4 gbufferWorldToClip;
+uniform mat4 frameWorldToClip;
+uniform vec2 frameSize;
+
+const int kAngleMetricNever = 1;  // an angle error never exceeds 1: that threshold means no split
+
+// Szabo's edge error: 1 − (N·b + 1)/2 with N the mirror normal at the midpoint of the two
+// reflection points and b the bisector there towards the eye and the midpoint of the edge.
+// Symmetric in its endpoints, so both triangles on an edge decide it alike.
+float angleError(TessellatedVertex a, TessellatedVertex b) {
+  vec4 clip = gbufferWorldToClip * vec4(0.5 * (a.reflectionTexelX.xyz + b.reflectionTexelX.xyz), 1.0);
+  if (clip.w <= 0.0) return 1.0;
+  ivec2 size = textureSize(gbufferPosition, 0).xy;
+  ivec2 texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * vec2(size)));
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return 1.0;
+  vec4 surface = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
+  if (surface.w <= 0.0) return 1.0;  // the midpoint left the mirror: the edge spans a silhouette
+  vec3 normal = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
+  vec3 edgeMidpoint = 0.5 * (a.positionU.xyz + b.positionU.xyz);
+  vec3 bisector = normalize(normalize(eyePosition - surface.xyz) + normalize(edgeMidpoint - surface.xyz));
+  return 1.0 - (dot(normal, bisector) + 1.0) * 0.5;
+}
+
+vec2 framePixel(vec3 world) {
+  vec4 clip = frameWorldToClip * vec4(world, 1.0);
+  return (clip.xy / clip.w * 0.5 + 0.5) * frameSize;
+}
+
+// How far the rasterizer draws the edge midpoint from where its true reflection projects.
+float pixelError(TessellatedVertex a, TessellatedVertex b, TessellatedVertex midpoint) {
+  if ((int(midpoint.virtualFlags.w) & kReflectionUnsolved) != 0) return 0.0;  // splitting cannot help
+  return length(framePixel(midpoint.virtualFlags.xyz) - framePixel(0.5 * (a.virtualFlags.xyz + b.virtualFlags.xyz)));
+}
+
+// The edge midpoint with its reflection searched; attributes interpolated symmetrically.
+TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
+  vec3 position = 0.5 * (a.positionU.xyz + b.positionU.xyz);
+  vec3 normal = 0.5 * (a.normalV.xyz + b.normalV.xyz);
+  vec2 uv = 0.5 * (vec2(a.positionU.w, a.normalV.w) + vec2(b.positionU.w, b.normalV.w));
+  ivec2 seed = ivec2(round(0.5 * (vec2(a.reflectionTexelX.w, a.normalTexelY.w) + vec2(b.reflectionTexelX.w, b.normalTexelY.w))));
+  ReflectedVertex reflection = searchReflection(position, seed, true);
+  countSearch(reflection.state.z, reflection.state.w);
+  return makeTessellatedVertex(position, dot(normal, normal) > 0.0 ? normalize(normal) : normal, uv, reflection);
+}
+
+bool exceeds(float error) { return pixelMetric != 0 || threshold < float(kAngleMetricNever) ? error >= threshold : false; }
+
+void main() {
+  uint triangle = gl_GlobalInvocationID.x;
+  if (triangle >= triangleCount) return;
+  TessellatedVertex corner[3] = TessellatedVertex[3](records[3u * triangle], records[3u * triangle + 1u], records[3u * triangle + 2u]);
+  int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
+  // The virtual-objects pass drops these whatever their size: nothing to refine.
+  bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 || (flags0 & flags1 & flags2 & kReflectionHidden) != 0;
+
+  EdgeSplit split;
+  int mask = 0;
+  if (!dropped) {
+    float worst = 0.0;
+    for (int e = 0; e < 3; ++e) {
+      TessellatedVertex a = corner[e], b = corner[(e + 1) % 3];
+      float error;
+      if (pixelMetric != 0) {
+        split.midpoint[e] = searchMidpoint(a, b);
+        error = pixelError(a, b, split.midpoint[e]);
+      } else {
+        error = angleError(a, b);
+      }
+      worst = max(worst, error);
+      if (exceeds(error)) mask |= 1 << e;
+    }
+    if (crackFree == 0) mask = exceeds(worst) ? 7 : 0;
+    if (pixelMetric == 0)
+      for (int e = 0; e < 3; ++e)
+        if ((mask & (1 << e)) != 0) split.midpoint[e] = searchMidpoint(corner[e], corner[(e + 1) % 3]);
+  }
+  split.mask = ivec4(mask, 0, 0, 0);
+  splits[triangle] = split;
+  const uint kChildren[4] = uint[4](0u, 2u, 3u, 4u);  // by number of split edges
+  if (mask == 0) atomicAdd(unsplitTriangles, 1u);
+  else atomicAdd(childTriangles, kChildren[bitCount(mask)]);
+}

@@ -9,6 +9,7 @@
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
+#include "app/TessellationOptions.h"
 #include "encode/JpegEncoder.h"
 #include "encode/PngEncoder.h"
 #include "reference/RayTracer.h"
@@ -23,26 +24,29 @@ constexpr int kMaxFrameSide = 8192;
 constexpr int kJpegQuality = 92;
 
 CommandLine renderOptions() {
+  std::vector<OptionSpec> specs = {
+      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`) or JSON scene file", "checker-sphere"},
+      {"size", "WxH", "frame size in pixels", "640x480"},
+      {"eye", "x,y,z", "camera position, world metres", ""},
+      {"target", "x,y,z", "point the camera looks at", ""},
+      {"up", "x,y,z", "camera up direction", ""},
+      {"fov", "DEG", "vertical field of view in degrees", ""},
+      {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
+      {"method", "METHOD", "search | raytrace | none", "search"},
+      {"margin", "SHARE", "G-buffer border per side as a share of the frame (search)", "0.1"},
+  };
+  for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
+  specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
+  specs.push_back(glOption());
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|raytrace|none] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--time SECONDS] [--method search|raytrace|none] [--tessellation MODE --metric METRIC --threshold X --level N] "
+      "[--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
       "raytrace = the exact reference (Embree, CPU); none = mirrors in their own colour only (GL).",
-      {
-          {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`) or JSON scene file", "checker-sphere"},
-          {"size", "WxH", "frame size in pixels", "640x480"},
-          {"eye", "x,y,z", "camera position, world metres", ""},
-          {"target", "x,y,z", "point the camera looks at", ""},
-          {"up", "x,y,z", "camera up direction", ""},
-          {"fov", "DEG", "vertical field of view in degrees", ""},
-          {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
-          {"method", "METHOD", "search | raytrace | none", "search"},
-          {"margin", "SHARE", "G-buffer border per side as a share of the frame (search)", "0.1"},
-          {"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"},
-          glOption(),
-      });
+      std::move(specs));
 }
 
 // <scene>.png in the working folder; a scene file's name cannot steer the write elsewhere.
@@ -97,6 +101,14 @@ std::string describeFrame(const render::RenderedFrame& frame) {
                   search.coldStarts, search.hidden, search.unsolved);
     text += line;
   }
+  const passes::TessellationStatistics& tessellation = frame.tessellation;
+  if (!tessellation.trianglesPerRound.empty()) {
+    text += "tessellation: " + std::to_string(tessellation.inputTriangles) + " -> " +
+            std::to_string(tessellation.finishedTriangles) + " triangles; working per round";
+    for (std::uint32_t count : tessellation.trianglesPerRound) text += " " + std::to_string(count);
+    text += "; " + std::to_string(tessellation.midpointSearches.searched) + " midpoint searches";
+    text += tessellation.capped ? "; CAPPED at the triangle limit: raise --threshold or lower --level\n" : "\n";
+  }
   return text;
 }
 
@@ -130,6 +142,8 @@ int runRender(std::span<const std::string> arguments) {
     return fail("--method expects search, raytrace or none, got '" + method + "'");
   auto margin = options.number("margin");
   if (!margin || *margin < 0.0 || *margin > 1.0) return fail("--margin expects a share in [0, 1], got '" + options.text("margin") + "'");
+  auto tessellation = parseTessellationOptions(options);
+  if (!tessellation) return fail(tessellation.error());
 
   std::vector<std::uint8_t> rgba;
   std::string timings;
@@ -149,6 +163,7 @@ int runRender(std::span<const std::string> arguments) {
     passes::ReflectionSettings settings;
     settings.method = method == "none" ? passes::ReflectionMethod::None : passes::ReflectionMethod::Search;
     settings.gbufferMargin = static_cast<float>(*margin);
+    settings.tessellation = *tessellation;
     auto frame = (*renderer)->render(pose, size->first, size->second, settings);
     if (!frame) return fail(frame.error());
     rgba = std::move(frame->rgba);

@@ -75,12 +75,13 @@ void main() {
   if (triangle >= triangleCount) return;
   TessellatedVertex corner[3] = TessellatedVertex[3](records[3u * triangle], records[3u * triangle + 1u], records[3u * triangle + 2u]);
   int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
-  // The virtual-objects pass drops these whatever their size: nothing to refine.
+  // The virtual-objects pass drops these whatever their size: nothing to refine, unless full
+  // tessellation (threshold 0) was asked for.
   bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 || (flags0 & flags1 & flags2 & kReflectionHidden) != 0;
 
   EdgeSplit split;
   int mask = 0;
-  if (!dropped) {
+  if (!dropped || threshold == 0.0) {
     float worst = 0.0;
     for (int e = 0; e < 3; ++e) {
       TessellatedVertex a = corner[e], b = corner[(e + 1) % 3];

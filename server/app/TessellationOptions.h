@@ -1,0 +1,21 @@
+#pragma once
+// The adaptive-tessellation options, the same for every command that renders virtual objects.
+#include <string>
+#include <vector>
+
+#include "app/CommandLine.h"
+#include "base/Result.h"
+#include "passes/ReflectionSettings.h"
+
+namespace specula::app {
+
+// --tessellation, --metric, --threshold, --level with the defaults of passes::TessellationSettings.
+std::vector<OptionSpec> tessellationOptions();
+
+// Reads them, or says which value is wrong and what it accepts.
+Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
+
+// "crack-free, pixels ≥ 1, level 4": how a report names one setting.
+std::string describeTessellation(const passes::TessellationSettings& settings);
+
+}  // namespace specula::app

@@ -1,0 +1,181 @@
+// Adaptive tessellation (shaders/tessellation) against its own bounds and, for images, the Embree
+// reference: counts follow the level rule, crack-free mode leaves no holes, and error falls with
+// the threshold.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "gl/GlContext.h"
+#include "reference/ImageMetrics.h"
+#include "reference/RayTracer.h"
+#include "render/Renderer.h"
+#include "scene/ScenePose.h"
+#include "scene/builtin/BuiltinScenes.h"
+
+using namespace specula;
+using passes::TessellationMetric;
+using passes::TessellationMode;
+
+namespace {
+
+struct Rig {
+  std::unique_ptr<gl::GlContext> context;
+  std::unique_ptr<render::Renderer> renderer;
+  scene::ScenePose pose;
+};
+
+Rig makeRig(const std::string& sceneName) {
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  EXPECT_TRUE(context) << context.error();
+  if (!context) return {};
+  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName)));
+  EXPECT_TRUE(renderer) << renderer.error();
+  if (!renderer) return {};
+  const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), 0.0);
+  return {std::move(context.value()), std::move(renderer.value()), pose};
+}
+
+passes::ReflectionSettings tessellation(TessellationMode mode, TessellationMetric metric, float threshold, int level) {
+  passes::ReflectionSettings settings;
+  settings.tessellation = {mode, metric, threshold, level};
+  return settings;
+}
+
+render::RenderedFrame renderFrame(Rig& rig, const passes::ReflectionSettings& settings, int width = 320, int height = 240) {
+  auto frame = rig.renderer->render(rig.pose, width, height, settings);
+  EXPECT_TRUE(frame) << frame.error();
+  return frame ? std::move(frame.value()) : render::RenderedFrame{};
+}
+
+std::uint64_t power4(int level) { return std::uint64_t{1} << (2 * level); }
+
+// The reference's colour of the mirror reflecting nothing: the commonest colour inside the mirror
+// of a scene that mostly reflects the sky.
+std::array<int, 3> backgroundInMirror(const std::vector<std::uint8_t>& rgba, const std::vector<std::uint8_t>& mask) {
+  std::map<std::array<int, 3>, int> counts;
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) ++counts[{rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]}];
+  return std::max_element(counts.begin(), counts.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+}
+
+// Mirror pixels (not on the mirror's outline) where the reference shows the plane and we show
+// the background reflection: holes in the virtual geometry.
+int holesInReflection(const std::vector<std::uint8_t>& ours, const reference::ReferenceImage& truth, int width, int height) {
+  const std::array<int, 3> background = backgroundInMirror(truth.rgba, truth.mirrorMask);
+  const auto isBackground = [&](const std::vector<std::uint8_t>& rgba, std::size_t i) {
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(rgba[4 * i + c] - background[c]) > 3) return false;
+    return true;
+  };
+  int holes = 0;
+  for (int y = 1; y + 1 < height; ++y) {
+    for (int x = 1; x + 1 < width; ++x) {
+      bool interior = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) interior = interior && truth.mirrorMask[(y + dy) * width + x + dx];
+      const std::size_t i = static_cast<std::size_t>(y * width + x);
+      if (interior && !isBackground(truth.rgba, i) && isBackground(ours, i)) ++holes;
+    }
+  }
+  return holes;
+}
+
+}  // namespace
+
+TEST(Tessellation, ThresholdZeroGivesExactlyFullTessellation) {
+  Rig rig = makeRig("quad");  // both quad triangles are drawn: every one of them splits
+  ASSERT_TRUE(rig.renderer);
+  for (TessellationMode mode : {TessellationMode::Paper, TessellationMode::CrackFree}) {
+    for (TessellationMetric metric : {TessellationMetric::Angle, TessellationMetric::Pixels}) {
+      for (int level = 1; level <= 4; ++level) {
+        const auto frame = renderFrame(rig, tessellation(mode, metric, 0.0f, level));
+        const passes::TessellationStatistics& t = frame.tessellation;
+        ASSERT_EQ(t.inputTriangles, 2u);
+        ASSERT_EQ(t.trianglesPerRound.size(), static_cast<std::size_t>(level + 1));
+        for (int round = 0; round <= level; ++round) EXPECT_EQ(t.trianglesPerRound[round], 2u * power4(round)) << "round " << round;
+        EXPECT_EQ(t.finishedTriangles, 2u * power4(level)) << "level " << level;
+        EXPECT_FALSE(t.capped);
+      }
+    }
+  }
+}
+
+TEST(Tessellation, AngleThresholdOneTessellatesNothing) {
+  Rig rig = makeRig("checker-sphere");
+  ASSERT_TRUE(rig.renderer);
+  for (TessellationMode mode : {TessellationMode::Paper, TessellationMode::CrackFree}) {
+    const auto frame = renderFrame(rig, tessellation(mode, TessellationMetric::Angle, 1.0f, 4));
+    EXPECT_GT(frame.tessellation.inputTriangles, 100u);
+    EXPECT_EQ(frame.tessellation.finishedTriangles, frame.tessellation.inputTriangles);
+    EXPECT_EQ(frame.tessellation.trianglesPerRound.size(), 1u);
+    EXPECT_EQ(frame.tessellation.midpointSearches.searched, 0u);
+  }
+}
+
+TEST(Tessellation, CountsNeverExceedTheLevelBoundAndFollowSettingsChangedAtRunTime) {
+  Rig rig = makeRig("checker-sphere");
+  ASSERT_TRUE(rig.renderer);
+  std::map<std::uint32_t, int> distinctCounts;
+  for (TessellationMode mode : {TessellationMode::Paper, TessellationMode::CrackFree}) {
+    for (auto [metric, threshold] : {std::pair{TessellationMetric::Angle, 0.01f}, std::pair{TessellationMetric::Angle, 0.001f},
+                                     std::pair{TessellationMetric::Pixels, 2.0f}, std::pair{TessellationMetric::Pixels, 0.5f}}) {
+      for (int level : {1, 3}) {
+        const auto frame = renderFrame(rig, tessellation(mode, metric, threshold, level));
+        const passes::TessellationStatistics& t = frame.tessellation;
+        ASSERT_LE(t.trianglesPerRound.size(), static_cast<std::size_t>(level + 1));
+        for (std::size_t round = 0; round < t.trianglesPerRound.size(); ++round)
+          EXPECT_LE(t.trianglesPerRound[round], t.inputTriangles * power4(static_cast<int>(round)));
+        EXPECT_LE(t.finishedTriangles, t.inputTriangles * power4(level));
+        EXPECT_GE(t.finishedTriangles, t.inputTriangles);
+        ++distinctCounts[t.finishedTriangles];
+      }
+    }
+  }
+  EXPECT_GE(distinctCounts.size(), 8u) << "threshold, level and mode must change the result from frame to frame";
+}
+
+
+TEST(Tessellation, CrackFreeModeLeavesNoHolesInACoarsePlanesReflection) {
+  Rig rig = makeRig("quad");
+  ASSERT_TRUE(rig.renderer);
+  constexpr int kWidth = 640, kHeight = 480;
+  auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(rig.renderer->scene()));
+  ASSERT_TRUE(tracer) << tracer.error();
+  auto truth = (*tracer)->render(rig.pose, {kWidth, kHeight, 1, 0});
+  ASSERT_TRUE(truth) << truth.error();
+  std::map<std::string, int> holes;
+  for (auto [name, mode] : {std::pair{"paper", TessellationMode::Paper}, std::pair{"crack-free", TessellationMode::CrackFree}}) {
+    const auto frame = renderFrame(rig, tessellation(mode, TessellationMetric::Pixels, 1.0f, 5), kWidth, kHeight);
+    holes[name] = holesInReflection(frame.rgba, *truth, kWidth, kHeight);
+  }
+  // Szabo's loop splits neighbours differently and opens T-junction holes here (62 px measured),
+  // which shows the check sees holes; deciding edge by edge leaves none.
+  EXPECT_GT(holes["paper"], 10);
+  EXPECT_EQ(holes["crack-free"], 0);
+}
+
+TEST(Tessellation, CheckerSphereMismatchFallsAsTheThresholdFalls) {
+  Rig rig = makeRig("checker-sphere");
+  ASSERT_TRUE(rig.renderer);
+  constexpr int kWidth = 640, kHeight = 480;
+  auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(rig.renderer->scene()));
+  ASSERT_TRUE(tracer) << tracer.error();
+  auto truth = (*tracer)->render(rig.pose, {kWidth, kHeight, 1, 0});
+  ASSERT_TRUE(truth) << truth.error();
+  const reference::RgbaView theirs{truth->rgba, kWidth, kHeight};
+  std::vector<double> mismatch;
+  std::vector<passes::ReflectionSettings> settings = {tessellation(TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0)};
+  for (float threshold : {4.0f, 1.0f, 0.25f}) settings.push_back(tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, threshold, 5));
+  for (const passes::ReflectionSettings& setting : settings) {
+    const auto frame = renderFrame(rig, setting, kWidth, kHeight);
+    auto share = reference::maskedMismatch({frame.rgba, kWidth, kHeight}, theirs, truth->mirrorMask);
+    ASSERT_TRUE(share);
+    mismatch.push_back(share->share());
+  }
+  // Measured: 0.069 untessellated, then 0.044, 0.023, 0.008 at 4, 1 and 0.25 px.
+  for (std::size_t i = 1; i < mismatch.size(); ++i) EXPECT_LT(mismatch[i], mismatch[i - 1]) << "threshold step " << i;
+  EXPECT_LT(mismatch.back(), 0.5 * mismatch.front());
+}

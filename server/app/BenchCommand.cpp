@@ -1,4 +1,5 @@
 // `specula bench`: every method's cost and accuracy on the built-in scenes, as a table, CSV and JSON.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -22,14 +23,15 @@ constexpr int kMaxFrames = 10000;
 
 CommandLine benchOptions() {
   return CommandLine(
-      "specula bench [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
+      "specula bench [tessellation] [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
       "[--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
       "frame-to-frame coherence and from a cold start, reflection-point error in pixels against the exact\n"
       "sphere solver (scenes with an analytic sphere mirror), and the last frame against the ray-traced\n"
       "reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time).\n"
-      "Prints a table and writes the same numbers as CSV and JSON.",
+      "Prints a table and writes the same numbers as CSV and JSON.\n"
+      "`specula bench tessellation --help` describes the tessellation sweep.",
       {
           {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "all built-in scenes"},
           {"size", "WxH", "frame size in pixels", "640x480"},
@@ -47,12 +49,9 @@ int fail(const std::string& message) {
   return 1;
 }
 
-std::vector<std::string> sceneList(const CommandLine& options) {
+std::vector<std::string> sceneList(const CommandLine& options, const std::vector<std::string>& defaults) {
   std::vector<std::string> names;
-  if (!options.has("scenes")) {
-    for (std::string_view name : scene::builtinSceneNames()) names.emplace_back(name);
-    return names;
-  }
+  if (!options.has("scenes")) return defaults;
   std::stringstream list(options.text("scenes"));
   for (std::string name; std::getline(list, name, ',');)
     if (!name.empty()) names.push_back(name);
@@ -74,9 +73,102 @@ Status writeFile(const std::string& path, const std::string& text) {
   return {};
 }
 
+// Loads every scene up front, so a typo fails before the long part.
+Result<std::vector<std::shared_ptr<const scene::Scene>>> loadScenes(const std::vector<std::string>& names) {
+  if (names.empty()) return Error{"--scenes names no scene"};
+  std::vector<std::shared_ptr<const scene::Scene>> scenes;
+  for (const std::string& name : names) {
+    auto loaded = loadScene(name);
+    if (!loaded) return Error{loaded.error()};
+    scenes.push_back(*loaded);
+  }
+  return scenes;
+}
+
+CommandLine tessellationBenchOptions() {
+  return CommandLine(
+      "specula bench tessellation [--scenes LIST] [--size WxH] [--frames N] [--time SECONDS] [--csv FILE] "
+      "[--json FILE] [--gl BACKEND]",
+      "Measures every tessellation setting on each scene at one pose: none; full tessellation at levels 1-5;\n"
+      "crack-free adaptive with Szabo's angle metric (0.1 ... 0.001) and the pixel metric (2, 1, 0.5 px) at\n"
+      "level 5. For each: triangles and vertices drawn, reflection searches (scene vertices and new edge\n"
+      "midpoints), median "
+      "frame and tessellation-pass time, and PSNR, SSIM and mirror mismatch against the ray-traced reference.\n"
+      "Then names, per scene, the adaptive setting with the fewest vertices that is as accurate as full level 4.",
+      {
+          {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "quad,teapot-table,checker-sphere,kitchen"},
+          {"size", "WxH", "frame size in pixels", "640x480"},
+          {"frames", "N", "timed frames per setting, after a warm-up frame", "3"},
+          {"time", "SECONDS", "scene time of the pose measured", "0"},
+          {"csv", "FILE", "CSV output, one row per scene and setting", "tessellation.csv"},
+          {"json", "FILE", "JSON output", "tessellation.json"},
+          glOption(),
+      });
+}
+
+int runTessellationBench(std::span<const std::string> arguments) {
+  CommandLine options = tessellationBenchOptions();
+  if (Status status = options.parse(arguments); !status) return fail(status.error());
+  if (options.helpRequested()) {
+    std::cout << options.help();
+    return 0;
+  }
+  bench::TessellationBenchOptions settings;
+  auto size = options.size("size", kMaxBenchSide);
+  auto frames = options.integer("frames", 1, kMaxFrames);
+  auto time = options.number("time");
+  if (!size) return fail(size.error());
+  if (!frames) return fail(frames.error());
+  if (!time) return fail(time.error());
+  if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
+  std::tie(settings.width, settings.height) = *size;
+  settings.frames = *frames;
+  settings.time = *time;
+  for (const char* output : {"csv", "json"})
+    if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
+  auto scenes = loadScenes(sceneList(options, {"quad", "teapot-table", "checker-sphere", "kitchen"}));
+  if (!scenes) return fail(scenes.error());
+  auto context = openGlContext(options.text("gl"));
+  if (!context) return fail(context.error());
+
+  const std::vector<passes::TessellationSettings> sweep = bench::tessellationSweep();
+  std::vector<bench::TessellationBenchRow> rows;
+  std::string goals;
+  for (std::size_t i = 0; i < scenes->size(); ++i) {
+    const std::string& name = (*scenes)[i]->name;
+    auto result = bench::benchmarkTessellation(**context, (*scenes)[i], settings, sweep,
+                                               [&](std::size_t index, const std::string& setting) {
+                                                 std::fprintf(stderr, "bench tessellation [%zu/%zu] %s: [%zu/%zu] %s\n", i + 1,
+                                                              scenes->size(), name.c_str(), index + 1, sweep.size(), setting.c_str());
+                                               });
+    if (!result) return fail(name + ": " + result.error());
+    const auto best = bench::cheapestMatchingFullLevel4(*result);
+    const auto full = std::find_if(result->begin(), result->end(), [](const auto& row) {
+      return row.tessellation.threshold == 0.0f && row.tessellation.maxLevel == 4;
+    });
+    char line[256];
+    if (best && full != result->end())
+      std::snprintf(line, sizeof line, "%s: full level 4 has mismatch %.4f with %u vertices; %s matches it with %u (%.0f %%)\n",
+                    name.c_str(), full->mirrorMismatch, full->vertices(), best->setting.c_str(), best->vertices(),
+                    100.0 * best->vertices() / std::max(1u, full->vertices()));
+    else
+      std::snprintf(line, sizeof line, "%s: no adaptive setting is as accurate as full level 4\n", name.c_str());
+    goals += line;
+    rows.insert(rows.end(), result->begin(), result->end());
+  }
+  std::fputs(bench::formatTessellationTable(rows).c_str(), stdout);
+  std::fputs(goals.c_str(), stdout);
+  for (const auto& [option, text] : {std::pair{"csv", bench::formatTessellationCsv(rows)}, {"json", bench::formatTessellationJson(rows)}}) {
+    if (Status status = writeFile(options.text(option), text); !status) return fail(status.error());
+    std::printf("wrote %s\n", options.text(option).c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int runBench(std::span<const std::string> arguments) {
+  if (!arguments.empty() && arguments.front() == "tessellation") return runTessellationBench(arguments.subspan(1));
   CommandLine options = benchOptions();
   if (Status status = options.parse(arguments); !status) return fail(status.error());
   if (options.helpRequested()) {
@@ -99,18 +191,16 @@ int runBench(std::span<const std::string> arguments) {
     std::tie(settings.coldWidth, settings.coldHeight) = *coldSize;
   }
   settings.reference = !options.has("no-reference");
-  const std::vector<std::string> names = sceneList(options);
-  if (names.empty()) return fail("--scenes names no scene");
+  std::vector<std::string> builtins;
+  for (std::string_view name : scene::builtinSceneNames()) builtins.emplace_back(name);
+  const std::vector<std::string> names = sceneList(options, builtins);
 
   // Check outputs and load every scene before the long part, so a typo fails at once.
   for (const char* output : {"csv", "json"})
     if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
-  std::vector<std::shared_ptr<const scene::Scene>> scenes;
-  for (const std::string& name : names) {
-    auto loaded = loadScene(name);
-    if (!loaded) return fail(loaded.error());
-    scenes.push_back(*loaded);
-  }
+  auto loaded = loadScenes(names);
+  if (!loaded) return fail(loaded.error());
+  const std::vector<std::shared_ptr<const scene::Scene>>& scenes = *loaded;
   auto context = openGlContext(options.text("gl"));
   if (!context) return fail(context.error());
 

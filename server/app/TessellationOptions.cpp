@@ -6,12 +6,15 @@ namespace specula::app {
 
 namespace {
 constexpr int kMaxLevel = 8;  // 4^8 = 65 536 triangles from one: the buffer cap stops it anyway
+// Without --threshold: the settings' default for pixels; for angles one as fine (checker-sphere,
+// `specula bench tessellation`).
+constexpr float kDefaultAngleThreshold = 0.003f;
 }
 
 std::vector<OptionSpec> tessellationOptions() {
   const passes::TessellationSettings defaults;
-  char threshold[32];
-  std::snprintf(threshold, sizeof threshold, "%g", defaults.threshold);
+  char threshold[64];
+  std::snprintf(threshold, sizeof threshold, "%g px; %g for angle", defaults.threshold, kDefaultAngleThreshold);
   return {
       {"tessellation", "MODE", "none | paper (Szabo: worst edge splits 1->4) | crack-free (edge by edge)", "crack-free"},
       {"metric", "METRIC", "pixels (midpoint off its true reflection) | angle (Szabo's 1-(N.b+1)/2)", "pixels"},
@@ -32,24 +35,18 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
   if (metric == "pixels") settings.metric = passes::TessellationMetric::Pixels;
   else if (metric == "angle") settings.metric = passes::TessellationMetric::Angle;
   else return Error{"--metric expects pixels or angle, got '" + metric + "'"};
-  auto threshold = options.number("threshold");
-  if (!threshold || *threshold < 0.0 || *threshold > 1e6)
-    return Error{"--threshold expects a number >= 0 (pixels, or 0..1 for --metric angle), got '" + options.text("threshold") + "'"};
-  settings.threshold = static_cast<float>(*threshold);
+  if (options.has("threshold")) {
+    auto threshold = options.number("threshold");
+    if (!threshold || *threshold < 0.0 || *threshold > 1e6)
+      return Error{"--threshold expects a number >= 0 (pixels, or 0..1 for --metric angle), got '" + options.text("threshold") + "'"};
+    settings.threshold = static_cast<float>(*threshold);
+  } else if (settings.metric == passes::TessellationMetric::Angle) {
+    settings.threshold = kDefaultAngleThreshold;
+  }
   auto level = options.integer("level", 0, kMaxLevel);
   if (!level) return Error{level.error()};
   settings.maxLevel = *level;
   return settings;
-}
-
-std::string describeTessellation(const passes::TessellationSettings& settings) {
-  if (settings.mode == passes::TessellationMode::None || settings.maxLevel == 0) return "none";
-  char text[96];
-  std::snprintf(text, sizeof text, "%s, %s >= %g, level %d",
-                settings.mode == passes::TessellationMode::Paper ? "paper" : "crack-free",
-                settings.metric == passes::TessellationMetric::Pixels ? "pixels" : "angle", settings.threshold,
-                settings.maxLevel);
-  return text;
 }
 
 }  // namespace specula::app

@@ -15,7 +15,4 @@ std::vector<OptionSpec> tessellationOptions();
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
 
-// "crack-free, pixels ≥ 1, level 4": how a report names one setting.
-std::string describeTessellation(const passes::TessellationSettings& settings);
-
 }  // namespace specula::app

@@ -108,31 +108,81 @@ std::string jsonString(const std::string& text) {
 
 std::string orDash(const std::string& text) { return text.empty() ? "-" : text; }
 
-}  // namespace
+// One CSV row or JSON object: named cells, numbers unless marked as text.
+struct Cell {
+  std::string name, value;
+  bool text = false;
+};
+using Row = std::vector<Cell>;
 
-std::string formatCsv(std::span<const SceneBenchResult> results) {
-  const std::vector<std::string> stages = stageNames(results);
-  std::string csv = "scene";
-  for (const auto& [name, value] : fields(SceneBenchResult{}, stages)) csv += "," + name;
+Row sceneRow(const SceneBenchResult& r, std::span<const std::string> stages) {
+  Row row = {{"scene", r.scene, true}};
+  for (auto& [name, value] : fields(r, stages)) row.push_back({std::move(name), std::move(value)});
+  return row;
+}
+
+// `header` names the columns (its values are ignored).
+std::string csvFromRows(const Row& header, std::span<const Row> rows) {
+  std::string csv;
+  for (std::size_t i = 0; i < header.size(); ++i) csv += (i ? "," : "") + header[i].name;
   csv += "\n";
-  for (const SceneBenchResult& result : results) {
-    csv += csvField(result.scene);
-    for (const auto& [name, value] : fields(result, stages)) csv += "," + csvField(value);
+  for (const Row& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) csv += (i ? "," : "") + csvField(row[i].value);
     csv += "\n";
   }
   return csv;
 }
 
-std::string formatJson(std::span<const SceneBenchResult> results) {
-  const std::vector<std::string> stages = stageNames(results);
-  std::string json = "{\"scenes\": [";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    json += i ? ",\n  {" : "\n  {";
-    json += "\"scene\": " + jsonString(results[i].scene);
-    for (const auto& [name, value] : fields(results[i], stages)) json += ", " + jsonString(name) + ": " + (value.empty() ? "null" : value);
+std::string jsonFromRows(const std::string& key, std::span<const Row> rows) {
+  std::string json = "{" + jsonString(key) + ": [";
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    json += r ? ",\n  {" : "\n  {";
+    for (std::size_t i = 0; i < rows[r].size(); ++i) {
+      const Cell& cell = rows[r][i];
+      json += (i ? ", " : "") + jsonString(cell.name) + ": " +
+              (cell.text ? jsonString(cell.value) : cell.value.empty() ? "null" : cell.value);
+    }
     json += "}";
   }
   return json + "\n]}\n";
+}
+
+Row tessellationRow(const TessellationBenchRow& r) {
+  const char* mode = r.tessellation.mode == passes::TessellationMode::None    ? "none"
+                     : r.tessellation.mode == passes::TessellationMode::Paper ? "paper"
+                                                                              : "crack-free";
+  return {{"scene", r.scene, true},
+          {"setting", r.setting, true},
+          {"mode", mode, true},
+          {"metric", r.tessellation.metric == passes::TessellationMetric::Pixels ? "pixels" : "angle", true},
+          {"threshold", number(r.tessellation.threshold, 4)},
+          {"level", std::to_string(r.tessellation.maxLevel)},
+          {"triangles", std::to_string(r.triangles)},
+          {"vertices", std::to_string(r.vertices())},
+          {"searches", std::to_string(r.searches)},
+          {"midpoint_searches", std::to_string(r.midpointSearches)},
+          {"capped", r.capped ? "true" : "false"},
+          {"frame_ms_median", number(r.frameMilliseconds, 2)},
+          {"tessellation_ms_median", number(r.tessellationMilliseconds, 2)},
+          {"psnr_db", number(r.psnr, 2)},
+          {"ssim", number(r.ssim, 4)},
+          {"mirror_mismatch", number(r.mirrorMismatch, 4)}};
+}
+
+}  // namespace
+
+std::string formatCsv(std::span<const SceneBenchResult> results) {
+  const std::vector<std::string> stages = stageNames(results);
+  std::vector<Row> rows;
+  for (const SceneBenchResult& result : results) rows.push_back(sceneRow(result, stages));
+  return csvFromRows(sceneRow(SceneBenchResult{}, stages), rows);
+}
+
+std::string formatJson(std::span<const SceneBenchResult> results) {
+  const std::vector<std::string> stages = stageNames(results);
+  std::vector<Row> rows;
+  for (const SceneBenchResult& result : results) rows.push_back(sceneRow(result, stages));
+  return jsonFromRows("scenes", rows);
 }
 
 std::string formatTable(std::span<const SceneBenchResult> results) {
@@ -156,6 +206,35 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
     std::string passes = "  passes (median ms):";
     for (const render::StageTiming& stage : r.stageMedians) passes += " " + stage.name + " " + number(stage.milliseconds, 2);
     table += passes + "\n";
+  }
+  return table;
+}
+
+
+std::string formatTessellationCsv(std::span<const TessellationBenchRow> rows) {
+  std::vector<Row> cells;
+  for (const TessellationBenchRow& row : rows) cells.push_back(tessellationRow(row));
+  return csvFromRows(tessellationRow(TessellationBenchRow{}), cells);
+}
+
+std::string formatTessellationJson(std::span<const TessellationBenchRow> rows) {
+  std::vector<Row> cells;
+  for (const TessellationBenchRow& row : rows) cells.push_back(tessellationRow(row));
+  return jsonFromRows("settings", cells);
+}
+
+std::string formatTessellationTable(std::span<const TessellationBenchRow> rows) {
+  std::string table;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-16s %-34s %10s %10s %10s %9s %8s | %-20s\n", "scene", "tessellation", "triangles",
+                "vertices", "searches", "frame ms", "tess ms", "PSNR/SSIM/mismatch");
+  table += line;
+  for (const TessellationBenchRow& r : rows) {
+    const std::string image = number(r.psnr, 1) + "/" + number(r.ssim, 3) + "/" + number(r.mirrorMismatch, 3);
+    std::snprintf(line, sizeof line, "%-16.40s %-34.40s %10u %10u %10u %9s %8s | %-20s%s\n", r.scene.c_str(),
+                  r.setting.c_str(), r.triangles, r.vertices(), r.searches, number(r.frameMilliseconds, 1).c_str(),
+                  number(r.tessellationMilliseconds, 1).c_str(), image.c_str(), r.capped ? "  (capped)" : "");
+    table += line;
   }
   return table;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bench/SceneBenchmark.h"
+#include "bench/TessellationBenchmark.h"
 
 namespace specula::bench {
 
@@ -14,5 +15,10 @@ std::string formatTable(std::span<const SceneBenchResult> results);
 std::string formatCsv(std::span<const SceneBenchResult> results);
 // {"scenes": [...]} with one object per scene.
 std::string formatJson(std::span<const SceneBenchResult> results);
+
+// `specula bench tessellation`: one row per (scene, setting); JSON as {"settings": [...]}.
+std::string formatTessellationTable(std::span<const TessellationBenchRow> rows);
+std::string formatTessellationCsv(std::span<const TessellationBenchRow> rows);
+std::string formatTessellationJson(std::span<const TessellationBenchRow> rows);
 
 }  // namespace specula::bench

@@ -5,6 +5,7 @@
 
 #include "bench/ReflectionAccuracy.h"
 #include "reference/ImageMetrics.h"
+#include "bench/ImageComparison.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "scene/ScenePose.h"
@@ -12,16 +13,6 @@
 namespace specula::bench {
 
 namespace {
-
-// Identical images have infinite PSNR, which neither CSV nor JSON can hold; report this instead.
-constexpr double kPsnrCeiling = 100.0;
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t middle = values.size() / 2;
-  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
 
 // Steps of the frames in `search`, summed over frames.
 class StepAccumulator {
@@ -59,21 +50,16 @@ std::vector<render::StageTiming> stageMedians(const std::vector<render::FrameTim
   return medians;
 }
 
-Result<SceneBenchResult::ReferenceComparison> compareWithReference(std::shared_ptr<const scene::Scene> scene,
+Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_ptr<const scene::Scene> scene,
                                                                    const scene::ScenePose& pose,
                                                                    const render::RenderedFrame& frame) {
   auto tracer = reference::RayTracer::create(std::move(scene));
   if (!tracer) return Error{tracer.error()};
   auto truth = (*tracer)->render(pose, {frame.width, frame.height, 1, 0});
   if (!truth) return Error{truth.error()};
-  const reference::RgbaView ours{frame.rgba, frame.width, frame.height}, theirs{truth->rgba, truth->width, truth->height};
-  auto psnr = reference::psnr(ours, theirs);
-  auto ssim = reference::ssim(ours, theirs);
-  auto mismatch = reference::maskedMismatch(ours, theirs, truth->mirrorMask);
-  if (!psnr) return Error{psnr.error()};
-  if (!ssim) return Error{ssim.error()};
-  if (!mismatch) return Error{mismatch.error()};
-  return SceneBenchResult::ReferenceComparison{std::min(*psnr, kPsnrCeiling), *ssim, mismatch->share(), truth->milliseconds};
+  auto comparison = bench::compareWithReference(frame, *truth);
+  if (!comparison) return Error{comparison.error()};
+  return SceneBenchResult::ReferenceComparison{comparison->psnr, comparison->ssim, comparison->mirrorMismatch, truth->milliseconds};
 }
 
 }  // namespace
@@ -143,7 +129,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   }
 
   if (options.reference) {
-    auto comparison = compareWithReference(scene, pose, last);
+    auto comparison = compareWithRayTracer(scene, pose, last);
     if (!comparison) return Error{"ray-traced reference for " + scene->name + ": " + comparison.error()};
     result.reference = *comparison;
   }

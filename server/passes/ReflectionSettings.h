@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 
 namespace specula::passes {
 
@@ -25,6 +26,9 @@ struct TessellationSettings {
   float threshold = 1.0f;  // an edge splits when its error is at least this (0: always; Angle 1: never)
   int maxLevel = 4;        // splits per original triangle at most: at most 4^maxLevel triangles each
 };
+
+// "crack-free pixels >= 1 level 4", or "none": how reports name a setting.
+std::string describeTessellation(const TessellationSettings& settings);
 
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;

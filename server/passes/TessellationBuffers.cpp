@@ -7,8 +7,6 @@ namespace specula::passes {
 TessellationBuffers::TessellationBuffers(const gl::GlApi& gl)
     : gl_(&gl), working_{{gl::GlBuffer(gl)}, {gl::GlBuffer(gl)}}, finished_{gl::GlBuffer(gl)}, splits_{gl::GlBuffer(gl)},
       counters_(gl), midpointStatistics_(gl) {
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, counters_.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, 2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_READ);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -60,20 +58,24 @@ bool TessellationBuffers::reserveFinished(std::size_t more) {
   return true;
 }
 
-void TessellationBuffers::resetCounters() {
-  const std::uint32_t zero[2] = {0, 0};
+void TessellationBuffers::resetCounters(std::size_t objects) {
+  const std::vector<RoundCounts> zero(std::max<std::size_t>(objects, 1));
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, counters_.id());
-  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof zero, zero);
+  if (zero.size() > counterCapacity_) {
+    counterCapacity_ = zero.size();
+    gl_->BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(counterCapacity_ * sizeof(RoundCounts)), nullptr, GL_DYNAMIC_READ);
+  }
+  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(zero.size() * sizeof(RoundCounts)), zero.data());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
-std::pair<std::uint32_t, std::uint32_t> TessellationBuffers::readCounters() const {
-  std::uint32_t values[2] = {0, 0};
+std::vector<TessellationBuffers::RoundCounts> TessellationBuffers::readCounters(std::size_t objects) const {
+  std::vector<RoundCounts> counts(objects);
   gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, counters_.id());
-  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof values, values);
+  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(objects * sizeof(RoundCounts)), counts.data());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return {values[0], values[1]};
+  return counts;
 }
 
 const TessellationStatistics& TessellationBuffers::finishStatistics() {

@@ -14,7 +14,7 @@
 
 namespace specula::passes {
 
-// The finished triangles of one reflected object in one mirror.
+// Finished triangles of one reflected object in one mirror (one range per round that finished some).
 struct TessellatedRange {
   std::size_t mirrorObject = 0, object = 0;
   GLint firstTriangle = 0;
@@ -55,9 +55,13 @@ class TessellationBuffers {
   std::size_t finishedCount() const { return finishedCount_; }
   void addFinished(std::size_t triangles) { finishedCount_ += triangles; }
 
-  // Zeroes, then after a split round reads, the round's two counters: children, unsplit.
-  void resetCounters();
-  std::pair<std::uint32_t, std::uint32_t> readCounters() const;
+  // Per object of a round: the triangles its split ones become and those finished. Zeroes them
+  // before a round; reads them after it (one readback for every object).
+  struct RoundCounts {
+    std::uint32_t children = 0, unsplit = 0;
+  };
+  void resetCounters(std::size_t objects);
+  std::vector<RoundCounts> readCounters(std::size_t objects) const;
 
   std::vector<TessellatedRange>& ranges() { return ranges_; }
   const std::vector<TessellatedRange>& ranges() const { return ranges_; }
@@ -75,6 +79,7 @@ class TessellationBuffers {
   const gl::GlApi* gl_;
   GrowingBuffer working_[2], finished_, splits_;
   gl::GlBuffer counters_, midpointStatistics_;
+  std::size_t counterCapacity_ = 0;  // objects
   std::size_t finishedCount_ = 0;
   std::vector<TessellatedRange> ranges_;
   TessellationStatistics statistics_;

@@ -50,83 +50,114 @@ void TessellationPass::execute(const FrameContext& frame) {
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     split_.use();
     setSearchMirror(split_, frame, *mirror);
-    for (const ReflectionSlotRange& range : mirror->reflected) tessellateObject(frame, *mirror, range);
+    // The G-buffer is the frame widened by the margin at one texel per pixel.
+    const TexelRect& covered = frame.reflections.coveredRect(mirror->layer);
+    const glm::vec2 margin(frame.reflections.margin());
+    split_.set("mirrorRect", glm::vec4(glm::vec2(covered.low) - margin, glm::vec2(covered.high) - margin));
+    tessellateMirror(frame, *mirror);
   }
   gl.Disable(GL_RASTERIZER_DISCARD);
   gl.BindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
   buffers.finishStatistics();
 }
 
-void TessellationPass::tessellateObject(const FrameContext& frame, const MirrorSlots& mirror, const ReflectionSlotRange& range) {
+void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror) {
   const gl::GlApi& gl = frame.gl;
   TessellationBuffers& buffers = frame.reflections.tessellation();
   TessellationStatistics& statistics = buffers.statistics();
-  const scene::SceneObject& object = frame.scene.objects[range.object];
-  std::size_t triangles = frame.scene.meshes[object.mesh].triangleCount();
-  if (triangles == 0) return;
-  if (!buffers.reserveWorking(0, triangles)) {
+  const TessellationSettings& settings = frame.settings.tessellation;
+
+  // Every reflected object of the mirror goes through the rounds together, each in its own run of
+  // the working list, so a round costs one readback whatever the number of objects.
+  struct ObjectRun {
+    const ReflectionSlotRange* range;
+    std::size_t first = 0, triangles = 0;
+  };
+  std::vector<ObjectRun> runs;
+  std::size_t total = 0;
+  for (const ReflectionSlotRange& range : mirror.reflected) {
+    const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range.object].mesh].triangleCount();
+    if (triangles == 0) continue;
+    runs.push_back({&range, total, triangles});
+    total += triangles;
+  }
+  if (runs.empty()) return;
+  if (!buffers.reserveWorking(0, total)) {
     statistics.capped = true;
     return;
   }
-  statistics.inputTriangles += static_cast<std::uint32_t>(triangles);
+  statistics.inputTriangles += static_cast<std::uint32_t>(total);
 
-  // Round 0's working list: the object's triangles with their corners' search results.
+  // Round 0's working list: the objects' triangles with their corners' search results.
   seed_.use();
-  const glm::mat4& objectToWorld = frame.pose.objectToWorld[range.object];
-  seed_.set("objectToWorld", objectToWorld);
-  seed_.set("normalToWorld", math::normalMatrix(objectToWorld));
-  seed_.set("firstSlot", static_cast<unsigned>(range.firstSlot));
-  gl.BindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers.working(0));
-  gl.BeginTransformFeedback(GL_TRIANGLES);
-  frame.meshes.draw(object.mesh);
-  gl.EndTransformFeedback();
+  for (const ObjectRun& run : runs) {
+    const glm::mat4& objectToWorld = frame.pose.objectToWorld[run.range->object];
+    seed_.set("objectToWorld", objectToWorld);
+    seed_.set("normalToWorld", math::normalMatrix(objectToWorld));
+    seed_.set("firstSlot", static_cast<unsigned>(run.range->firstSlot));
+    gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers.working(0),
+                       static_cast<GLintptr>(run.first * TessellationBuffers::kTriangleBytes),
+                       static_cast<GLsizeiptr>(run.triangles * TessellationBuffers::kTriangleBytes));
+    gl.BeginTransformFeedback(GL_TRIANGLES);
+    frame.meshes.draw(frame.scene.objects[run.range->object].mesh);
+    gl.EndTransformFeedback();
+  }
 
-  const TessellationSettings& settings = frame.settings.tessellation;
-  const std::size_t firstFinished = buffers.finishedCount();
   int list = 0;
-  for (int round = 0;; ++round) {
+  for (int round = 0; !runs.empty(); ++round) {
     if (statistics.trianglesPerRound.size() <= static_cast<std::size_t>(round)) statistics.trianglesPerRound.push_back(0);
-    statistics.trianglesPerRound[static_cast<std::size_t>(round)] += static_cast<std::uint32_t>(triangles);
-    bool last = round >= settings.maxLevel;
-    std::uint32_t children = 0, unsplit = static_cast<std::uint32_t>(triangles);
-    if (!last && buffers.reserveSplits(triangles)) {
+    statistics.trianglesPerRound[static_cast<std::size_t>(round)] += static_cast<std::uint32_t>(total);
+    bool last = round >= settings.maxLevel || !buffers.reserveSplits(total);
+    std::vector<TessellationBuffers::RoundCounts> counts(runs.size());
+    if (!last) {
       split_.use();
-      split_.set("triangleCount", static_cast<unsigned>(triangles));
-      buffers.resetCounters();
+      buffers.resetCounters(runs.size());
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(list));
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
-      gl.DispatchCompute(static_cast<GLuint>((triangles + kGroupSize - 1) / kGroupSize), 1, 1);
-      gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      std::tie(children, unsplit) = buffers.readCounters();
-      if (children > 0 && !buffers.reserveWorking(1 - list, children)) {  // past the cap: finish here
-        statistics.capped = true;
-        last = true;
+      for (std::size_t i = 0; i < runs.size(); ++i) {
+        split_.set("firstTriangle", static_cast<unsigned>(runs[i].first));
+        split_.set("triangleCount", static_cast<unsigned>(runs[i].triangles));
+        split_.set("counterIndex", static_cast<unsigned>(i));
+        gl.DispatchCompute(static_cast<GLuint>((runs[i].triangles + kGroupSize - 1) / kGroupSize), 1, 1);
       }
-    } else if (!last) {
-      statistics.capped = true;
-      last = true;
+      gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      counts = buffers.readCounters(runs.size());
     }
-    if (last) {
-      children = 0;
-      unsplit = static_cast<std::uint32_t>(triangles);
-    }
+    std::size_t children = 0, unsplit = 0;
+    for (const auto& count : counts) children += count.children;
+    if (!last && children > 0 && !buffers.reserveWorking(1 - list, children)) last = true;  // past the cap: finish here
+    if (last && round < settings.maxLevel) statistics.capped = true;
+    if (last)
+      for (std::size_t i = 0; i < runs.size(); ++i) counts[i] = {0, static_cast<std::uint32_t>(runs[i].triangles)};
+    for (const auto& count : counts) unsplit += count.unsplit;
     if (!buffers.reserveFinished(unsplit)) {
       statistics.capped = true;
-      break;
+      return;
     }
-    emit(frame, list, triangles, last, false, buffers.finished(), buffers.finishedCount(), unsplit);
-    buffers.addFinished(unsplit);
-    if (children == 0) break;
-    emit(frame, list, triangles, false, true, buffers.working(1 - list), 0, children);
+    // One draw per list for all objects: the geometry shader's output keeps input order, so each
+    // object's triangles stay together, where its counts say.
+    emit(frame, list, total, last, false, buffers.finished(), buffers.finishedCount(), unsplit);
+    if (children > 0) emit(frame, list, total, false, true, buffers.working(1 - list), 0, children);
+    std::vector<ObjectRun> next;
+    std::size_t nextTotal = 0;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      if (counts[i].unsplit > 0) {
+        buffers.ranges().push_back({mirror.mirrorObject, runs[i].range->object, static_cast<GLint>(buffers.finishedCount()),
+                                    static_cast<GLsizei>(counts[i].unsplit)});
+        buffers.addFinished(counts[i].unsplit);
+      }
+      if (counts[i].children == 0) continue;
+      next.push_back({runs[i].range, nextTotal, counts[i].children});
+      nextTotal += counts[i].children;
+    }
+    runs = std::move(next);
+    total = nextTotal;
     list = 1 - list;
-    triangles = children;
   }
-  buffers.ranges().push_back({mirror.mirrorObject, range.object, static_cast<GLint>(firstFinished),
-                              static_cast<GLsizei>(buffers.finishedCount() - firstFinished)});
 }
 
 void TessellationPass::emit(const FrameContext& frame, int from, std::size_t triangles, bool finishAll, bool emitChildren,
-                            GLuint target, std::size_t firstTriangle, std::size_t count) const {
+                            GLuint target, std::size_t targetTriangle, std::size_t count) const {
   if (count == 0) return;
   const gl::GlApi& gl = frame.gl;
   TessellationBuffers& buffers = frame.reflections.tessellation();
@@ -136,7 +167,7 @@ void TessellationPass::emit(const FrameContext& frame, int from, std::size_t tri
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(from));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
   gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, target,
-                     static_cast<GLintptr>(firstTriangle * TessellationBuffers::kTriangleBytes),
+                     static_cast<GLintptr>(targetTriangle * TessellationBuffers::kTriangleBytes),
                      static_cast<GLsizeiptr>(count * TessellationBuffers::kTriangleBytes));
   gl.BindVertexArray(emptyVertexArray_.id());
   gl.BeginTransformFeedback(GL_TRIANGLES);

@@ -24,12 +24,12 @@ class TessellationPass final : public Pass {
  private:
   TessellationPass(const gl::GlApi& gl, gl::ShaderProgram seed, gl::ShaderProgram split, gl::ShaderProgram emit)
       : seed_(std::move(seed)), split_(std::move(split)), emit_(std::move(emit)), emptyVertexArray_(gl) {}
-  // Tessellates one object in one mirror; its finished triangles are appended to the frame's list.
-  void tessellateObject(const FrameContext& frame, const MirrorSlots& mirror, const ReflectionSlotRange& range);
-  // Writes the unsplit triangles (emitChildren false) or the children of the split ones of
-  // `triangles` working triangles in list `from` to `target` at `firstTriangle`.
+  // Tessellates every object the mirror reflects; finished triangles are appended to the frame's list.
+  void tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror);
+  // Writes the unsplit triangles (emitChildren false) or the children of the split ones among the
+  // first `triangles` of working list `from` to `target` at `targetTriangle`; `count` is how many.
   void emit(const FrameContext& frame, int from, std::size_t triangles, bool finishAll, bool emitChildren, GLuint target,
-            std::size_t firstTriangle, std::size_t count) const;
+            std::size_t targetTriangle, std::size_t count) const;
 
   gl::ShaderProgram seed_, split_, emit_;
   gl::GlVertexArray emptyVertexArray_;  // emission reads its records from storage buffers

@@ -15,17 +15,19 @@ layout(std430, binding = 4) writeonly buffer EdgeSplits {
   EdgeSplit splits[];
 };
 layout(std430, binding = 5) buffer TessellationCounters {
-  uint childTriangles;    // triangles the split ones become
-  uint unsplitTriangles;  // triangles that are finished this round
+  uint counters[];  // per object of the round: triangles the split ones become, triangles finished
 };
 
+uniform uint firstTriangle;  // this object's triangles in the working list
 uniform uint triangleCount;
+uniform uint counterIndex;   // this object's pair of counters
 uniform int crackFree;          // 1: each edge decided alone; 0: Szabo's worst edge splits all three
 uniform int pixelMetric;        // 1: error in pixels; 0: Szabo's angle error
 uniform float threshold;
 uniform mat4 gbufferWorldToClip;
 uniform mat4 frameWorldToClip;
 uniform vec2 frameSize;
+uniform vec4 mirrorRect;  // the mirror's bounds on screen in frame pixels: low x, y, high x, y
 
 const int kAngleMetricNever = 1;  // an angle error never exceeds 1: that threshold means no split
 
@@ -34,12 +36,12 @@ const int kAngleMetricNever = 1;  // an angle error never exceeds 1: that thresh
 // Symmetric in its endpoints, so both triangles on an edge decide it alike.
 float angleError(TessellatedVertex a, TessellatedVertex b) {
   vec4 clip = gbufferWorldToClip * vec4(0.5 * (a.reflectionTexelX.xyz + b.reflectionTexelX.xyz), 1.0);
-  if (clip.w <= 0.0) return 1.0;
+  if (clip.w <= 0.0) return 0.0;
   ivec2 size = textureSize(gbufferPosition, 0).xy;
   ivec2 texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * vec2(size)));
-  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return 1.0;
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return 0.0;
   vec4 surface = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
-  if (surface.w <= 0.0) return 1.0;  // the midpoint left the mirror: the edge spans a silhouette
+  if (surface.w <= 0.0) return 0.0;  // off the mirror: nothing there to draw finer
   vec3 normal = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
   vec3 edgeMidpoint = 0.5 * (a.positionU.xyz + b.positionU.xyz);
   vec3 bisector = normalize(normalize(eyePosition - surface.xyz) + normalize(edgeMidpoint - surface.xyz));
@@ -49,6 +51,14 @@ float angleError(TessellatedVertex a, TessellatedVertex b) {
 vec2 framePixel(vec3 world) {
   vec4 clip = frameWorldToClip * vec4(world, 1.0);
   return (clip.xy / clip.w * 0.5 + 0.5) * frameSize;
+}
+
+// Whether the triangle's virtual corners all lie beyond one side of the mirror's rectangle on
+// screen (frame pixels); a triangle crossing it may still show inside.
+bool outsideMirrorRect(TessellatedVertex a, TessellatedVertex b, TessellatedVertex c) {
+  vec2 pa = framePixel(a.virtualFlags.xyz), pb = framePixel(b.virtualFlags.xyz), pc = framePixel(c.virtualFlags.xyz);
+  vec2 low = min(pa, min(pb, pc)), high = max(pa, max(pb, pc));
+  return any(lessThan(high, mirrorRect.xy)) || any(greaterThan(low, mirrorRect.zw));
 }
 
 // How far the rasterizer draws the edge midpoint from where its true reflection projects.
@@ -71,13 +81,15 @@ TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
 bool exceeds(float error) { return pixelMetric != 0 || threshold < float(kAngleMetricNever) ? error >= threshold : false; }
 
 void main() {
-  uint triangle = gl_GlobalInvocationID.x;
-  if (triangle >= triangleCount) return;
+  if (gl_GlobalInvocationID.x >= triangleCount) return;
+  uint triangle = firstTriangle + gl_GlobalInvocationID.x;
   TessellatedVertex corner[3] = TessellatedVertex[3](records[3u * triangle], records[3u * triangle + 1u], records[3u * triangle + 2u]);
   int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
-  // The virtual-objects pass drops these whatever their size: nothing to refine, unless full
+  // The virtual-objects pass drops these whatever their size, and a virtual triangle wholly
+  // outside the frame or the mirror's part of it is not seen: nothing to refine, unless full
   // tessellation (threshold 0) was asked for.
-  bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 || (flags0 & flags1 & flags2 & kReflectionHidden) != 0;
+  bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 || (flags0 & flags1 & flags2 & kReflectionHidden) != 0 ||
+                 outsideMirrorRect(corner[0], corner[1], corner[2]);
 
   EdgeSplit split;
   int mask = 0;
@@ -87,8 +99,10 @@ void main() {
       TessellatedVertex a = corner[e], b = corner[(e + 1) % 3];
       float error;
       if (pixelMetric != 0) {
-        split.midpoint[e] = searchMidpoint(a, b);
-        error = pixelError(a, b, split.midpoint[e]);
+        // An edge drawn shorter than the threshold cannot bend by more than it: no search needed.
+        bool tooShort = length(framePixel(a.virtualFlags.xyz) - framePixel(b.virtualFlags.xyz)) < threshold;
+        if (!tooShort) split.midpoint[e] = searchMidpoint(a, b);
+        error = tooShort ? 0.0 : pixelError(a, b, split.midpoint[e]);
       } else {
         error = angleError(a, b);
       }
@@ -100,9 +114,11 @@ void main() {
       for (int e = 0; e < 3; ++e)
         if ((mask & (1 << e)) != 0) split.midpoint[e] = searchMidpoint(corner[e], corner[(e + 1) % 3]);
   }
-  split.mask = ivec4(mask, 0, 0, 0);
-  splits[triangle] = split;
+  // Most triangles split nothing: write their mask alone, not 256 bytes of midpoints.
+  splits[triangle].mask = ivec4(mask, 0, 0, 0);
+  for (int e = 0; e < 3; ++e)
+    if ((mask & (1 << e)) != 0) splits[triangle].midpoint[e] = split.midpoint[e];
   const uint kChildren[4] = uint[4](0u, 2u, 3u, 4u);  // by number of split edges
-  if (mask == 0) atomicAdd(unsplitTriangles, 1u);
-  else atomicAdd(childTriangles, kChildren[bitCount(mask)]);
+  if (mask == 0) atomicAdd(counters[2u * counterIndex + 1u], 1u);
+  else atomicAdd(counters[2u * counterIndex], kChildren[bitCount(mask)]);
 }

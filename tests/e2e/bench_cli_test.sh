@@ -40,4 +40,20 @@ fails_with "an unwritable CSV names the file" "could not write '$work/no/dir/b.c
 check "an unwritable CSV fails before any scene is measured" bash -c "! '$specula' bench --scenes quad --size 32x24 --frames 1 --json '$work/no/dir/b.json' 2>&1 | grep -q 'bench \[1/1\]'"
 check "bench --help lists every option" bash -c "for o in scenes size frames cold-size no-reference csv json gl; do '$specula' bench --help | grep -q -- \"--\$o\" || exit 1; done"
 check "specula --help lists bench" bash -c "'$specula' --help | grep -q '^  bench'"
+
+# bench tessellation: one row per setting of the sweep, counts that follow the level rule.
+output=$("$specula" bench tessellation --scenes quad --size 160x120 --frames 1 --csv "$work/t.csv" --json "$work/t.json" 2>"$work/tprogress.txt")
+check "bench tessellation succeeds" test $? -eq 0
+check "bench tessellation reports progress per setting" grep -q "bench tessellation \[1/1\] quad: \[14/14\] crack-free pixels >= 0.5 level 5" "$work/tprogress.txt"
+check "its CSV has a header and the 16 settings" test "$(wc -l <"$work/t.csv")" -eq 17
+tcolumns=$(head -1 "$work/t.csv" | tr ',' '\n' | wc -l)
+check "every tessellation CSV row has the header's columns" awk -F, -v n="$tcolumns" 'NF != n { exit 1 }' "$work/t.csv"
+tvalue() { awk -F, -v setting="$1" -v column="$2" 'NR == 1 { for (i = 1; i <= NF; i++) at[$i] = i } $2 == setting { print $at[column] }' "$work/t.csv"; }
+check "untessellated, the quad's 2 triangles are drawn" test "$(tvalue none triangles)" = 2
+check "full level 3 draws 2 x 4^3 triangles" test "$(tvalue 'crack-free angle >= 0 level 3' triangles)" = 128
+check "full level 5 is more accurate than none" awk -v a="$(tvalue 'crack-free angle >= 0 level 5' mirror_mismatch)" -v b="$(tvalue none mirror_mismatch)" 'BEGIN { exit !(a < b) }'
+check "the summary names the goal" grep -q "^quad: " <<<"$output"
+check "the tessellation JSON lists the settings" grep -q '"setting": "crack-free pixels >= 1 level 5"' "$work/t.json"
+check "bench tessellation --help tells what it sweeps" bash -c "'$specula' bench tessellation --help | grep -q 'full tessellation at levels 1-5'"
+fails_with "bench tessellation checks its options" "--frames expects an integer" bench tessellation --frames 0
 finish

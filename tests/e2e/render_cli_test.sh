@@ -25,9 +25,17 @@ fails_with "an unknown option is refused" "unknown option --colour" render --col
 fails_with "an unknown GL backend is refused" "--gl expects auto, egl-device" render --gl glx
 fails_with "an unknown GL backend is refused for the ray tracer too" "--gl expects auto, egl-device" render --method raytrace --gl glx
 fails_with "an unwritable output names the file" "could not write '$work/missing/dir/f.png'" render --size 8x8 --out "$work/missing/dir/f.png"
+output=$("$specula" render --scene quad --size 160x120 --tessellation crack-free --threshold 0 --level 2 --out "$work/q.png" 2>&1)
+check "render prints the tessellation it did" grep -q "tessellation: 2 -> 32 triangles; working per round 2 8 32" <<<"$output"
+output=$("$specula" render --scene quad --size 160x120 --tessellation none --out "$work/q0.png" 2>&1)
+check "--tessellation none runs no tessellation pass" bash -c "! grep -q tessellation <<<'$output'"
+fails_with "a bad tessellation mode lists the modes" "--tessellation expects none, paper or crack-free" render --tessellation fine
+fails_with "a bad metric lists the metrics" "--metric expects pixels or angle" render --metric px
+fails_with "a negative threshold is refused" "--threshold expects a number >= 0" render --threshold -1
+fails_with "a level past the bound is refused" "--level expects an integer in [0, 8]" render --level 9
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"
-check "render --help lists every option" bash -c "for o in scene size eye target up fov time out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
+check "render --help lists every option" bash -c "for o in scene size eye target up fov time tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
 finish

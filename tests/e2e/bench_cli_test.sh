@@ -44,7 +44,7 @@ check "specula --help lists bench" bash -c "'$specula' --help | grep -q '^  benc
 # bench tessellation: one row per setting of the sweep, counts that follow the level rule.
 output=$("$specula" bench tessellation --scenes quad --size 160x120 --frames 1 --csv "$work/t.csv" --json "$work/t.json" 2>"$work/tprogress.txt")
 check "bench tessellation succeeds" test $? -eq 0
-check "bench tessellation reports progress per setting" grep -q "bench tessellation \[1/1\] quad: \[14/14\] crack-free pixels >= 0.5 level 5" "$work/tprogress.txt"
+check "bench tessellation reports progress per setting" grep -q "bench tessellation \[1/1\] quad: \[16/16\] crack-free pixels >= 0.1 level 5" "$work/tprogress.txt"
 check "its CSV has a header and the 16 settings" test "$(wc -l <"$work/t.csv")" -eq 17
 tcolumns=$(head -1 "$work/t.csv" | tr ',' '\n' | wc -l)
 check "every tessellation CSV row has the header's columns" awk -F, -v n="$tcolumns" 'NF != n { exit 1 }' "$work/t.csv"

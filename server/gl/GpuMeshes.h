@@ -20,6 +20,8 @@ class GpuMeshes {
   std::size_t size() const { return meshes_.size(); }
   // The mesh's vertex buffer (scene::Vertex records), for compute passes that read it as storage.
   GLuint vertexBuffer(std::size_t index) const { return meshes_.at(index).vertices.id(); }
+  // Its index buffer (three uint32 per triangle), likewise.
+  GLuint indexBuffer(std::size_t index) const { return meshes_.at(index).indices.id(); }
 
  private:
   struct Entry {

@@ -83,7 +83,7 @@ const TessellationStatistics& TessellationBuffers::finishStatistics() {
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());
   gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(SearchStatistics), &statistics_.midpointSearches);
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  statistics_.finishedTriangles = static_cast<std::uint32_t>(finishedCount_);
+  statistics_.finishedTriangles += static_cast<std::uint32_t>(finishedCount_);  // the meshes drawn whole were counted already
   return statistics_;
 }
 

@@ -19,6 +19,7 @@ struct TessellatedRange {
   std::size_t mirrorObject = 0, object = 0;
   GLint firstTriangle = 0;
   GLsizei triangles = 0;
+  bool fromMesh = false;  // nothing split: draw the object's own mesh with its search slots
 };
 
 struct TessellationStatistics {

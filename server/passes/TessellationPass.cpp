@@ -12,7 +12,8 @@ constexpr std::array<std::string_view, 2> kReads{"mirror-gbuffer", "reflected-ve
 constexpr std::array<std::string_view, 1> kWrites{"tessellated-triangles"};
 constexpr GLuint kGroupSize = 64;  // local_size_x of tessellation-split.comp
 // Storage-buffer bindings of shaders/tessellation.
-constexpr GLuint kWorkingBinding = 3, kSplitsBinding = 4, kCountersBinding = 5, kStatisticsBinding = 2;
+constexpr GLuint kMeshVerticesBinding = 0, kStatisticsBinding = 2, kWorkingBinding = 3, kSplitsBinding = 4,
+                 kCountersBinding = 5, kMeshIndicesBinding = 6;
 }  // namespace
 
 Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlApi& gl) {
@@ -82,46 +83,82 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     total += triangles;
   }
   if (runs.empty()) return;
-  if (!buffers.reserveWorking(0, total)) {
+  statistics.inputTriangles += static_cast<std::uint32_t>(total);
+  const auto drawFromMesh = [&](const ObjectRun& run) {
+    buffers.ranges().push_back({mirror.mirrorObject, run.range->object, 0, static_cast<GLsizei>(run.triangles), true});
+    statistics.finishedTriangles += static_cast<std::uint32_t>(run.triangles);
+  };
+  if (!buffers.reserveSplits(total) || !buffers.reserveWorking(0, total)) {
     statistics.capped = true;
+    for (const ObjectRun& run : runs) drawFromMesh(run);
     return;
   }
-  statistics.inputTriangles += static_cast<std::uint32_t>(total);
 
-  // Round 0's working list: the objects' triangles with their corners' search results.
+  // Round 0 decides on the meshes themselves. Objects nothing splits are drawn from their meshes;
+  // only the others are copied, with their corners' search results, into the working list.
+  split_.use();
+  split_.set("fromMesh", 1);
+  buffers.resetCounters(runs.size());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::size_t mesh = frame.scene.objects[runs[i].range->object].mesh;
+    const glm::mat4& objectToWorld = frame.pose.objectToWorld[runs[i].range->object];
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshVerticesBinding, frame.meshes.vertexBuffer(mesh));
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, frame.meshes.indexBuffer(mesh));
+    split_.set("objectToWorld", objectToWorld);
+    split_.set("normalToWorld", math::normalMatrix(objectToWorld));
+    split_.set("firstSlot", static_cast<unsigned>(runs[i].range->firstSlot));
+    dispatchSplit(frame, runs[i].first, runs[i].triangles, i);
+  }
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  std::vector<TessellationBuffers::RoundCounts> counts = buffers.readCounters(runs.size());
+  split_.set("fromMesh", 0);
+  if (statistics.trianglesPerRound.empty()) statistics.trianglesPerRound.push_back(0);
+  statistics.trianglesPerRound[0] += static_cast<std::uint32_t>(total);
+
+  std::vector<ObjectRun> splitting;
+  std::vector<TessellationBuffers::RoundCounts> splittingCounts;
   seed_.use();
-  for (const ObjectRun& run : runs) {
-    const glm::mat4& objectToWorld = frame.pose.objectToWorld[run.range->object];
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (counts[i].children == 0) {
+      drawFromMesh(runs[i]);
+      continue;
+    }
+    splitting.push_back(runs[i]);
+    splittingCounts.push_back(counts[i]);
+    const glm::mat4& objectToWorld = frame.pose.objectToWorld[runs[i].range->object];
     seed_.set("objectToWorld", objectToWorld);
     seed_.set("normalToWorld", math::normalMatrix(objectToWorld));
-    seed_.set("firstSlot", static_cast<unsigned>(run.range->firstSlot));
+    seed_.set("firstSlot", static_cast<unsigned>(runs[i].range->firstSlot));
     gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers.working(0),
-                       static_cast<GLintptr>(run.first * TessellationBuffers::kTriangleBytes),
-                       static_cast<GLsizeiptr>(run.triangles * TessellationBuffers::kTriangleBytes));
+                       static_cast<GLintptr>(runs[i].first * TessellationBuffers::kTriangleBytes),
+                       static_cast<GLsizeiptr>(runs[i].triangles * TessellationBuffers::kTriangleBytes));
     gl.BeginTransformFeedback(GL_TRIANGLES);
-    frame.meshes.draw(frame.scene.objects[run.range->object].mesh);
+    frame.meshes.draw(frame.scene.objects[runs[i].range->object].mesh);
     gl.EndTransformFeedback();
   }
+  runs = std::move(splitting);
+  counts = std::move(splittingCounts);
 
   int list = 0;
   for (int round = 0; !runs.empty(); ++round) {
-    if (statistics.trianglesPerRound.size() <= static_cast<std::size_t>(round)) statistics.trianglesPerRound.push_back(0);
-    statistics.trianglesPerRound[static_cast<std::size_t>(round)] += static_cast<std::uint32_t>(total);
-    bool last = round >= settings.maxLevel || !buffers.reserveSplits(total);
-    std::vector<TessellationBuffers::RoundCounts> counts(runs.size());
-    if (!last) {
-      split_.use();
-      buffers.resetCounters(runs.size());
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(list));
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
-      for (std::size_t i = 0; i < runs.size(); ++i) {
-        split_.set("firstTriangle", static_cast<unsigned>(runs[i].first));
-        split_.set("triangleCount", static_cast<unsigned>(runs[i].triangles));
-        split_.set("counterIndex", static_cast<unsigned>(i));
-        gl.DispatchCompute(static_cast<GLuint>((runs[i].triangles + kGroupSize - 1) / kGroupSize), 1, 1);
+    total = 0;
+    for (const ObjectRun& run : runs) total += run.triangles;
+    bool last = round >= settings.maxLevel;
+    if (round > 0) {
+      if (statistics.trianglesPerRound.size() <= static_cast<std::size_t>(round)) statistics.trianglesPerRound.push_back(0);
+      statistics.trianglesPerRound[static_cast<std::size_t>(round)] += static_cast<std::uint32_t>(total);
+      last = last || !buffers.reserveSplits(runs.back().first + runs.back().triangles);
+      counts.assign(runs.size(), {});
+      if (!last) {
+        split_.use();
+        buffers.resetCounters(runs.size());
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(list));
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
+        for (std::size_t i = 0; i < runs.size(); ++i) dispatchSplit(frame, runs[i].first, runs[i].triangles, i);
+        gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        counts = buffers.readCounters(runs.size());
       }
-      gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      counts = buffers.readCounters(runs.size());
     }
     std::size_t children = 0, unsplit = 0;
     for (const auto& count : counts) children += count.children;
@@ -134,30 +171,36 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
       statistics.capped = true;
       return;
     }
-    // One draw per list for all objects: the geometry shader's output keeps input order, so each
-    // object's triangles stay together, where its counts say.
-    emit(frame, list, total, last, false, buffers.finished(), buffers.finishedCount(), unsplit);
-    if (children > 0) emit(frame, list, total, false, true, buffers.working(1 - list), 0, children);
     std::vector<ObjectRun> next;
     std::size_t nextTotal = 0;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (counts[i].unsplit > 0) {
+        emit(frame, list, runs[i].first, runs[i].triangles, last, false, buffers.finished(), buffers.finishedCount(), counts[i].unsplit);
         buffers.ranges().push_back({mirror.mirrorObject, runs[i].range->object, static_cast<GLint>(buffers.finishedCount()),
-                                    static_cast<GLsizei>(counts[i].unsplit)});
+                                    static_cast<GLsizei>(counts[i].unsplit), false});
         buffers.addFinished(counts[i].unsplit);
       }
       if (counts[i].children == 0) continue;
+      emit(frame, list, runs[i].first, runs[i].triangles, false, true, buffers.working(1 - list), nextTotal, counts[i].children);
       next.push_back({runs[i].range, nextTotal, counts[i].children});
       nextTotal += counts[i].children;
     }
     runs = std::move(next);
-    total = nextTotal;
     list = 1 - list;
   }
 }
 
-void TessellationPass::emit(const FrameContext& frame, int from, std::size_t triangles, bool finishAll, bool emitChildren,
-                            GLuint target, std::size_t targetTriangle, std::size_t count) const {
+void TessellationPass::dispatchSplit(const FrameContext& frame, std::size_t firstTriangle, std::size_t triangles,
+                                     std::size_t counterIndex) const {
+  split_.set("firstTriangle", static_cast<unsigned>(firstTriangle));
+  split_.set("triangleCount", static_cast<unsigned>(triangles));
+  split_.set("counterIndex", static_cast<unsigned>(counterIndex));
+  frame.gl.DispatchCompute(static_cast<GLuint>((triangles + kGroupSize - 1) / kGroupSize), 1, 1);
+}
+
+void TessellationPass::emit(const FrameContext& frame, int from, std::size_t firstTriangle, std::size_t triangles,
+                            bool finishAll, bool emitChildren, GLuint target, std::size_t targetTriangle,
+                            std::size_t count) const {
   if (count == 0) return;
   const gl::GlApi& gl = frame.gl;
   TessellationBuffers& buffers = frame.reflections.tessellation();
@@ -171,7 +214,7 @@ void TessellationPass::emit(const FrameContext& frame, int from, std::size_t tri
                      static_cast<GLsizeiptr>(count * TessellationBuffers::kTriangleBytes));
   gl.BindVertexArray(emptyVertexArray_.id());
   gl.BeginTransformFeedback(GL_TRIANGLES);
-  gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangles));
+  gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(3 * firstTriangle), static_cast<GLsizei>(3 * triangles));
   gl.EndTransformFeedback();
   gl.BindVertexArray(0);
 }

@@ -26,10 +26,14 @@ class TessellationPass final : public Pass {
       : seed_(std::move(seed)), split_(std::move(split)), emit_(std::move(emit)), emptyVertexArray_(gl) {}
   // Tessellates every object the mirror reflects; finished triangles are appended to the frame's list.
   void tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror);
+  // Runs the split decisions for working triangles [firstTriangle, + triangles), counting into
+  // the object's pair of counters.
+  void dispatchSplit(const FrameContext& frame, std::size_t firstTriangle, std::size_t triangles, std::size_t counterIndex) const;
   // Writes the unsplit triangles (emitChildren false) or the children of the split ones among the
-  // first `triangles` of working list `from` to `target` at `targetTriangle`; `count` is how many.
-  void emit(const FrameContext& frame, int from, std::size_t triangles, bool finishAll, bool emitChildren, GLuint target,
-            std::size_t targetTriangle, std::size_t count) const;
+  // working triangles [firstTriangle, + triangles) of list `from` to `target` at `targetTriangle`;
+  // `count` is how many that is.
+  void emit(const FrameContext& frame, int from, std::size_t firstTriangle, std::size_t triangles, bool finishAll,
+            bool emitChildren, GLuint target, std::size_t targetTriangle, std::size_t count) const;
 
   gl::ShaderProgram seed_, split_, emit_;
   gl::GlVertexArray emptyVertexArray_;  // emission reads its records from storage buffers

@@ -30,26 +30,35 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
 std::span<const std::string_view> VirtualObjectsPass::reads() const { return kReads; }
 std::span<const std::string_view> VirtualObjectsPass::writes() const { return kWrites; }
 
+void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const {
+  const glm::mat4& objectToWorld = frame.pose.objectToWorld[range.object];
+  objects_.set("objectToWorld", objectToWorld);
+  objects_.set("normalToWorld", math::normalMatrix(objectToWorld));
+  objects_.set("firstSlot", static_cast<unsigned>(range.firstSlot));
+  setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material]);
+  frame.meshes.draw(frame.scene.objects[range.object].mesh);
+}
+
 void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const {
-  if (frame.plan.tessellate) {
-    const TessellationBuffers& tessellation = frame.reflections.tessellation();
-    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
-    frame.gl.BindVertexArray(emptyVertexArray_.id());
-    for (const TessellatedRange& range : tessellation.ranges()) {
-      if (range.mirrorObject != mirror.mirrorObject || range.triangles == 0) continue;
-      setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object].material]);
-      frame.gl.DrawArrays(GL_TRIANGLES, 3 * range.firstTriangle, 3 * range.triangles);
-    }
+  if (!frame.plan.tessellate) {
+    objects_.use();
+    for (const ReflectionSlotRange& range : mirror.reflected) drawMesh(frame, range);
     return;
   }
-  for (const ReflectionSlotRange& range : mirror.reflected) {
-    const scene::SceneObject& object = frame.scene.objects[range.object];
-    const glm::mat4& objectToWorld = frame.pose.objectToWorld[range.object];
-    objects_.set("objectToWorld", objectToWorld);
-    objects_.set("normalToWorld", math::normalMatrix(objectToWorld));
-    objects_.set("firstSlot", static_cast<unsigned>(range.firstSlot));
-    setMaterial(objects_, frame.scene.materials[object.material]);
-    frame.meshes.draw(object.mesh);
+  const TessellationBuffers& tessellation = frame.reflections.tessellation();
+  for (const TessellatedRange& range : tessellation.ranges()) {
+    if (range.mirrorObject != mirror.mirrorObject || range.triangles == 0) continue;
+    if (range.fromMesh) {
+      objects_.use();
+      for (const ReflectionSlotRange& slots : mirror.reflected)
+        if (slots.object == range.object) drawMesh(frame, slots);
+      continue;
+    }
+    tessellated_.use();
+    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
+    frame.gl.BindVertexArray(emptyVertexArray_.id());
+    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object].material]);
+    frame.gl.DrawArrays(GL_TRIANGLES, 3 * range.firstTriangle, 3 * range.triangles);
   }
 }
 
@@ -65,10 +74,11 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BlendFunc(GL_ONE, GL_ONE);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
-  const gl::ShaderProgram& objects = objectsProgram(frame);
-  objects.use();
-  objects.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-  setSceneLighting(objects, frame.scene);
+  for (const gl::ShaderProgram* objects : {&objects_, &tessellated_}) {
+    objects->use();
+    objects->set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+    setSceneLighting(*objects, frame.scene);
+  }
 
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
@@ -84,16 +94,15 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 
     // 2. Depth of the nearest virtual surface, 3. shade only that surface, added over the mirror.
-    objects.use();
-    objects.set("reflectivity", reflectivity);
+    setForBoth("reflectivity", reflectivity);
     gl.DepthFunc(GL_LESS);
-    objects.set("depthOnly", 1);
+    setForBoth("depthOnly", 1);
     drawObjects(frame, *mirror);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.Enable(GL_BLEND);
     gl.DepthMask(GL_FALSE);
     gl.DepthFunc(GL_EQUAL);
-    objects.set("depthOnly", 0);
+    setForBoth("depthOnly", 0);
     drawObjects(frame, *mirror);
 
     // 4. Where no virtual object landed, the mirror reflects the background.

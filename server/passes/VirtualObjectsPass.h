@@ -23,8 +23,17 @@ class VirtualObjectsPass final : public Pass {
  private:
   VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region)
       : objects_(std::move(objects)), tessellated_(std::move(tessellated)), region_(std::move(region)), emptyVertexArray_(gl) {}
+  // Draws the mirror's virtual objects with whichever program each needs.
   void drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const;
-  const gl::ShaderProgram& objectsProgram(const FrameContext& frame) const { return frame.plan.tessellate ? tessellated_ : objects_; }
+  // One reflected object from its own mesh and search slots (objects_ in use).
+  void drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const;
+  template <typename Value>
+  void setForBoth(const char* name, const Value& value) const {
+    for (const gl::ShaderProgram* program : {&objects_, &tessellated_}) {
+      program->use();
+      program->set(name, value);
+    }
+  }
 
   gl::ShaderProgram objects_;      // scene meshes at their search slots
   gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles

@@ -7,9 +7,18 @@ layout(local_size_x = 64) in;
 #include "common/search-core.glsl"
 #include "common/search-statistics.glsl"
 #include "common/edge-split.glsl"
+#include "common/reflected-vertex-buffer.glsl"
 
 layout(std430, binding = 3) readonly buffer WorkingTriangles {
   TessellatedVertex records[];
+};
+// Round 0 reads the object's mesh and search slots instead: most triangles split nothing and then
+// never need copying into a working list.
+layout(std430, binding = 0) readonly buffer MeshVertices {
+  float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
+};
+layout(std430, binding = 6) readonly buffer MeshIndices {
+  uint meshIndex[];
 };
 layout(std430, binding = 4) writeonly buffer EdgeSplits {
   EdgeSplit splits[];
@@ -18,6 +27,10 @@ layout(std430, binding = 5) buffer TessellationCounters {
   uint counters[];  // per object of the round: triangles the split ones become, triangles finished
 };
 
+uniform int fromMesh;        // 1 in round 0: corners from the mesh below, not the working list
+uniform mat4 objectToWorld;
+uniform mat3 normalToWorld;
+uniform uint firstSlot;
 uniform uint firstTriangle;  // this object's triangles in the working list
 uniform uint triangleCount;
 uniform uint counterIndex;   // this object's pair of counters
@@ -80,10 +93,20 @@ TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
 
 bool exceeds(float error) { return pixelMetric != 0 || threshold < float(kAngleMetricNever) ? error >= threshold : false; }
 
+TessellatedVertex loadCorner(uint local, uint triangle, int k) {
+  if (fromMesh == 0) return records[3u * triangle + uint(k)];
+  uint index = meshIndex[3u * local + uint(k)], at = 8u * index;
+  vec3 position = vec3(meshVertex[at], meshVertex[at + 1u], meshVertex[at + 2u]);
+  vec3 normal = vec3(meshVertex[at + 3u], meshVertex[at + 4u], meshVertex[at + 5u]);
+  vec2 uv = vec2(meshVertex[at + 6u], meshVertex[at + 7u]);
+  return makeTessellatedVertex((objectToWorld * vec4(position, 1.0)).xyz, normalToWorld * normal, uv, reflected[firstSlot + index]);
+}
+
 void main() {
   if (gl_GlobalInvocationID.x >= triangleCount) return;
   uint triangle = firstTriangle + gl_GlobalInvocationID.x;
-  TessellatedVertex corner[3] = TessellatedVertex[3](records[3u * triangle], records[3u * triangle + 1u], records[3u * triangle + 2u]);
+  uint local = gl_GlobalInvocationID.x;
+  TessellatedVertex corner[3] = TessellatedVertex[3](loadCorner(local, triangle, 0), loadCorner(local, triangle, 1), loadCorner(local, triangle, 2));
   int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
   // The virtual-objects pass drops these whatever their size, and a virtual triangle wholly
   // outside the frame or the mirror's part of it is not seen: nothing to refine, unless full
@@ -91,28 +114,39 @@ void main() {
   bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 || (flags0 & flags1 & flags2 & kReflectionHidden) != 0 ||
                  outsideMirrorRect(corner[0], corner[1], corner[2]);
 
-  EdgeSplit split;
+  // Which edges need their midpoint searched: every drawn edge longer than the pixel threshold
+  // (its error depends on the search), or every edge the angle metric splits.
+  bool search[3] = bool[3](false, false, false);
+  float error[3] = float[3](0.0, 0.0, 0.0);
   int mask = 0;
   if (!dropped || threshold == 0.0) {
-    float worst = 0.0;
     for (int e = 0; e < 3; ++e) {
       TessellatedVertex a = corner[e], b = corner[(e + 1) % 3];
-      float error;
-      if (pixelMetric != 0) {
-        // An edge drawn shorter than the threshold cannot bend by more than it: no search needed.
-        bool tooShort = length(framePixel(a.virtualFlags.xyz) - framePixel(b.virtualFlags.xyz)) < threshold;
-        if (!tooShort) split.midpoint[e] = searchMidpoint(a, b);
-        error = tooShort ? 0.0 : pixelError(a, b, split.midpoint[e]);
-      } else {
-        error = angleError(a, b);
-      }
-      worst = max(worst, error);
-      if (exceeds(error)) mask |= 1 << e;
+      if (pixelMetric != 0)  // crack-free: an edge drawn shorter than the threshold cannot bend by more than it
+        search[e] = crackFree == 0 || threshold == 0.0 || length(framePixel(a.virtualFlags.xyz) - framePixel(b.virtualFlags.xyz)) >= threshold;
+      else
+        error[e] = angleError(a, b);
     }
-    if (crackFree == 0) mask = exceeds(worst) ? 7 : 0;
-    if (pixelMetric == 0)
+    if (pixelMetric == 0) {
+      float worst = max(error[0], max(error[1], error[2]));
       for (int e = 0; e < 3; ++e)
-        if ((mask & (1 << e)) != 0) split.midpoint[e] = searchMidpoint(corner[e], corner[(e + 1) % 3]);
+        if (crackFree != 0 ? exceeds(error[e]) : exceeds(worst)) search[e] = true;
+    }
+  }
+  // One call site for the search, which is large.
+  EdgeSplit split;
+  for (int e = 0; e < 3; ++e) {
+    if (!search[e]) continue;
+    split.midpoint[e] = searchMidpoint(corner[e], corner[(e + 1) % 3]);
+    if (pixelMetric != 0) error[e] = pixelError(corner[e], corner[(e + 1) % 3], split.midpoint[e]);
+  }
+  if (pixelMetric != 0) {
+    float worst = max(error[0], max(error[1], error[2]));
+    for (int e = 0; e < 3; ++e)
+      if (search[e] && (crackFree != 0 ? exceeds(error[e]) : exceeds(worst))) mask |= 1 << e;
+  } else {
+    for (int e = 0; e < 3; ++e)
+      if (search[e]) mask |= 1 << e;
   }
   // Most triangles split nothing: write their mask alone, not 256 bytes of midpoints.
   splits[triangle].mask = ivec4(mask, 0, 0, 0);

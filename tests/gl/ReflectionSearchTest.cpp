@@ -15,29 +15,14 @@
 #include "render/Renderer.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
+#include "SceneRig.h"
 
 using namespace specula;
 using specula::bench::measureReflectionPoints;
 using specula::bench::toPixels;
+using specula::testing::makeRig;
+using specula::testing::Rig;
 
-namespace {
-
-struct Rig {
-  std::unique_ptr<gl::GlContext> context;
-  std::unique_ptr<render::Renderer> renderer;
-};
-
-Rig makeRig(const std::string& sceneName) {
-  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
-  EXPECT_TRUE(context) << context.error();
-  if (!context) return {};
-  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName)));
-  EXPECT_TRUE(renderer) << renderer.error();
-  if (!renderer) return {};
-  return {std::move(context.value()), std::move(renderer.value())};
-}
-
-}  // namespace
 
 class SearchAccuracyTest : public ::testing::TestWithParam<const char*> {};
 

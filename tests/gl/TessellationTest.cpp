@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "gl/GlContext.h"
 #include "reference/ImageMetrics.h"
@@ -14,6 +15,7 @@
 #include "render/Renderer.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
+#include "SceneRig.h"
 
 using namespace specula;
 using passes::TessellationMetric;
@@ -21,21 +23,26 @@ using passes::TessellationMode;
 
 namespace {
 
-struct Rig {
-  std::unique_ptr<gl::GlContext> context;
-  std::unique_ptr<render::Renderer> renderer;
+// A scene's renderer with the pose every test here measures: the scene at time 0.
+struct Rig : specula::testing::Rig {
   scene::ScenePose pose;
 };
 
 Rig makeRig(const std::string& sceneName) {
-  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
-  EXPECT_TRUE(context) << context.error();
-  if (!context) return {};
-  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName)));
-  EXPECT_TRUE(renderer) << renderer.error();
-  if (!renderer) return {};
-  const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), 0.0);
-  return {std::move(context.value()), std::move(renderer.value()), pose};
+  Rig rig{specula::testing::makeRig(sceneName), {}};
+  if (rig.renderer) rig.pose = scene::ScenePose::at(rig.renderer->scene(), 0.0);
+  return rig;
+}
+
+// The ray tracer's frame at the rig's pose.
+std::optional<reference::ReferenceImage> referenceImage(const Rig& rig, int width, int height) {
+  auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(rig.renderer->scene()));
+  EXPECT_TRUE(tracer) << tracer.error();
+  if (!tracer) return std::nullopt;
+  auto truth = (*tracer)->render(rig.pose, {width, height, 1, 0});
+  EXPECT_TRUE(truth) << truth.error();
+  if (!truth) return std::nullopt;
+  return std::move(truth.value());
 }
 
 passes::ReflectionSettings tessellation(TessellationMode mode, TessellationMetric metric, float threshold, int level) {
@@ -142,10 +149,8 @@ TEST(Tessellation, CrackFreeModeLeavesNoHolesInACoarsePlanesReflection) {
   Rig rig = makeRig("quad");
   ASSERT_TRUE(rig.renderer);
   constexpr int kWidth = 640, kHeight = 480;
-  auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(rig.renderer->scene()));
-  ASSERT_TRUE(tracer) << tracer.error();
-  auto truth = (*tracer)->render(rig.pose, {kWidth, kHeight, 1, 0});
-  ASSERT_TRUE(truth) << truth.error();
+  const auto truth = referenceImage(rig, kWidth, kHeight);
+  ASSERT_TRUE(truth);
   std::map<std::string, int> holes;
   for (auto [name, mode] : {std::pair{"paper", TessellationMode::Paper}, std::pair{"crack-free", TessellationMode::CrackFree}}) {
     const auto frame = renderFrame(rig, tessellation(mode, TessellationMetric::Pixels, 1.0f, 5), kWidth, kHeight);
@@ -161,10 +166,8 @@ TEST(Tessellation, CheckerSphereMismatchFallsAsTheThresholdFalls) {
   Rig rig = makeRig("checker-sphere");
   ASSERT_TRUE(rig.renderer);
   constexpr int kWidth = 640, kHeight = 480;
-  auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(rig.renderer->scene()));
-  ASSERT_TRUE(tracer) << tracer.error();
-  auto truth = (*tracer)->render(rig.pose, {kWidth, kHeight, 1, 0});
-  ASSERT_TRUE(truth) << truth.error();
+  const auto truth = referenceImage(rig, kWidth, kHeight);
+  ASSERT_TRUE(truth);
   const reference::RgbaView theirs{truth->rgba, kWidth, kHeight};
   std::vector<double> mismatch;
   std::vector<passes::ReflectionSettings> settings = {tessellation(TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0)};

@@ -1,0 +1,30 @@
+#pragma once
+// A GL context and a renderer for one built-in scene, as the GL tests use them.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "gl/GlContext.h"
+#include "render/Renderer.h"
+#include "scene/builtin/BuiltinScenes.h"
+
+namespace specula::testing {
+
+struct Rig {
+  std::unique_ptr<gl::GlContext> context;
+  std::unique_ptr<render::Renderer> renderer;
+};
+
+// Fails the calling test (not fatally) and returns an empty rig when GL or the scene cannot start.
+inline Rig makeRig(const std::string& sceneName) {
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  EXPECT_TRUE(context) << context.error();
+  if (!context) return {};
+  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName)));
+  EXPECT_TRUE(renderer) << renderer.error();
+  if (!renderer) return {};
+  return {std::move(context.value()), std::move(renderer.value())};
+}
+
+}  // namespace specula::testing

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math/Transform.h"
+
 namespace specula::passes {
 
 glm::mat4 FrameView::worldToClip(glm::vec2 widen, float farScale) const {
@@ -13,6 +15,17 @@ glm::mat4 FrameView::worldToClip(glm::vec2 widen, float farScale) const {
 std::size_t FrameContext::searchMesh(std::size_t mirrorObject) const {
   const scene::SceneObject& object = scene.objects[mirrorObject];
   return object.mirror && object.mirror->closedTwinMesh ? *object.mirror->closedTwinMesh : object.mesh;
+}
+
+glm::mat4 FrameContext::gbufferWorldToClip() const {
+  return view.worldToClip(glm::vec2(reflections.size()) / glm::vec2(target.width(), target.height()));
+}
+
+void FrameContext::setReflectedObject(const gl::ShaderProgram& program, const ReflectionSlotRange& range) const {
+  const glm::mat4& objectToWorld = pose.objectToWorld[range.object];
+  program.set("objectToWorld", objectToWorld);
+  program.set("normalToWorld", math::normalMatrix(objectToWorld));
+  program.set("firstSlot", static_cast<unsigned>(range.firstSlot));
 }
 
 }  // namespace specula::passes

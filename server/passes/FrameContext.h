@@ -7,6 +7,7 @@
 #include "gl/GlApi.h"
 #include "gl/GpuMeshes.h"
 #include "gl/RenderTarget.h"
+#include "gl/ShaderProgram.h"
 #include "math/Bounds.h"
 #include "passes/FramePlan.h"
 #include "passes/ReflectionResources.h"
@@ -42,6 +43,11 @@ struct FrameContext {
 
   // The object's mesh a mirror search runs on: its closed twin when the mirror is open.
   std::size_t searchMesh(std::size_t mirrorObject) const;
+  // The eye's projection onto the G-buffer: the frame's, widened by the G-buffer's margin.
+  glm::mat4 gbufferWorldToClip() const;
+  // Sets objectToWorld, normalToWorld and firstSlot: the uniforms naming one reflected object
+  // and its search slots, for every program that reads them.
+  void setReflectedObject(const gl::ShaderProgram& program, const ReflectionSlotRange& range) const;
 };
 
 }  // namespace specula::passes

@@ -48,8 +48,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   ReflectionResources& resources = frame.reflections;
   const glm::ivec2 size = resources.size();
-  const glm::vec2 widen = glm::vec2(size) / glm::vec2(frame.target.width(), frame.target.height());
-  const glm::mat4 worldToClip = frame.view.worldToClip(widen);
+  const glm::mat4 worldToClip = frame.gbufferWorldToClip();
 
   gl.BindFramebuffer(GL_FRAMEBUFFER, resources.framebuffer());
   gl.Viewport(0, 0, size.x, size.y);

@@ -11,12 +11,14 @@
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
 #include "passes/ReflectedVertex.h"
+#include "passes/ReflectionSlots.h"
 
 namespace specula::passes {
 
 // Finished triangles of one reflected object in one mirror (one range per round that finished some).
 struct TessellatedRange {
-  std::size_t mirrorObject = 0, object = 0;
+  std::size_t mirrorObject = 0;
+  const ReflectionSlotRange* object = nullptr;  // the reflected object and its search slots
   GLint firstTriangle = 0;
   GLsizei triangles = 0;
   bool fromMesh = false;  // nothing split: draw the object's own mesh with its search slots

@@ -2,7 +2,6 @@
 
 #include <array>
 
-#include "math/Transform.h"
 #include "passes/SearchPass.h"
 
 namespace specula::passes {
@@ -40,8 +39,7 @@ void TessellationPass::execute(const FrameContext& frame) {
   split_.set("crackFree", settings.mode == TessellationMode::CrackFree ? 1 : 0);
   split_.set("pixelMetric", settings.metric == TessellationMetric::Pixels ? 1 : 0);
   split_.set("threshold", settings.threshold);
-  split_.set("gbufferWorldToClip", frame.view.worldToClip(glm::vec2(frame.reflections.size()) /
-                                                          glm::vec2(frame.target.width(), frame.target.height())));
+  split_.set("gbufferWorldToClip", frame.gbufferWorldToClip());
   split_.set("frameWorldToClip", frame.view.worldToClip());
   split_.set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
@@ -85,7 +83,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   if (runs.empty()) return;
   statistics.inputTriangles += static_cast<std::uint32_t>(total);
   const auto drawFromMesh = [&](const ObjectRun& run) {
-    buffers.ranges().push_back({mirror.mirrorObject, run.range->object, 0, static_cast<GLsizei>(run.triangles), true});
+    buffers.ranges().push_back({mirror.mirrorObject, run.range, 0, static_cast<GLsizei>(run.triangles), true});
     statistics.finishedTriangles += static_cast<std::uint32_t>(run.triangles);
   };
   if (!buffers.reserveSplits(total) || !buffers.reserveWorking(0, total)) {
@@ -102,12 +100,9 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const std::size_t mesh = frame.scene.objects[runs[i].range->object].mesh;
-    const glm::mat4& objectToWorld = frame.pose.objectToWorld[runs[i].range->object];
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshVerticesBinding, frame.meshes.vertexBuffer(mesh));
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, frame.meshes.indexBuffer(mesh));
-    split_.set("objectToWorld", objectToWorld);
-    split_.set("normalToWorld", math::normalMatrix(objectToWorld));
-    split_.set("firstSlot", static_cast<unsigned>(runs[i].range->firstSlot));
+    frame.setReflectedObject(split_, *runs[i].range);
     dispatchSplit(frame, runs[i].first, runs[i].triangles, i);
   }
   gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -126,10 +121,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     }
     splitting.push_back(runs[i]);
     splittingCounts.push_back(counts[i]);
-    const glm::mat4& objectToWorld = frame.pose.objectToWorld[runs[i].range->object];
-    seed_.set("objectToWorld", objectToWorld);
-    seed_.set("normalToWorld", math::normalMatrix(objectToWorld));
-    seed_.set("firstSlot", static_cast<unsigned>(runs[i].range->firstSlot));
+    frame.setReflectedObject(seed_, *runs[i].range);
     gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers.working(0),
                        static_cast<GLintptr>(runs[i].first * TessellationBuffers::kTriangleBytes),
                        static_cast<GLsizeiptr>(runs[i].triangles * TessellationBuffers::kTriangleBytes));
@@ -176,7 +168,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (counts[i].unsplit > 0) {
         emit(frame, list, runs[i].first, runs[i].triangles, last, false, buffers.finished(), buffers.finishedCount(), counts[i].unsplit);
-        buffers.ranges().push_back({mirror.mirrorObject, runs[i].range->object, static_cast<GLint>(buffers.finishedCount()),
+        buffers.ranges().push_back({mirror.mirrorObject, runs[i].range, static_cast<GLint>(buffers.finishedCount()),
                                     static_cast<GLsizei>(counts[i].unsplit), false});
         buffers.addFinished(counts[i].unsplit);
       }

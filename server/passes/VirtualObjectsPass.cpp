@@ -2,7 +2,6 @@
 
 #include <array>
 
-#include "math/Transform.h"
 #include "passes/ShadingUniforms.h"
 
 namespace specula::passes {
@@ -31,10 +30,7 @@ std::span<const std::string_view> VirtualObjectsPass::reads() const { return kRe
 std::span<const std::string_view> VirtualObjectsPass::writes() const { return kWrites; }
 
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const {
-  const glm::mat4& objectToWorld = frame.pose.objectToWorld[range.object];
-  objects_.set("objectToWorld", objectToWorld);
-  objects_.set("normalToWorld", math::normalMatrix(objectToWorld));
-  objects_.set("firstSlot", static_cast<unsigned>(range.firstSlot));
+  frame.setReflectedObject(objects_, range);
   setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material]);
   frame.meshes.draw(frame.scene.objects[range.object].mesh);
 }
@@ -50,14 +46,13 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlot
     if (range.mirrorObject != mirror.mirrorObject || range.triangles == 0) continue;
     if (range.fromMesh) {
       objects_.use();
-      for (const ReflectionSlotRange& slots : mirror.reflected)
-        if (slots.object == range.object) drawMesh(frame, slots);
+      drawMesh(frame, *range.object);
       continue;
     }
     tessellated_.use();
     frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
     frame.gl.BindVertexArray(emptyVertexArray_.id());
-    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object].material]);
+    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object->object].material]);
     frame.gl.DrawArrays(GL_TRIANGLES, 3 * range.firstTriangle, 3 * range.triangles);
   }
 }

@@ -56,4 +56,6 @@ check "the summary names the goal" grep -q "^quad: " <<<"$output"
 check "the tessellation JSON lists the settings" grep -q '"setting": "crack-free pixels >= 1 level 5"' "$work/t.json"
 check "bench tessellation --help tells what it sweeps" bash -c "'$specula' bench tessellation --help | grep -q 'full tessellation at levels 1-5'"
 fails_with "bench tessellation checks its options" "--frames expects an integer" bench tessellation --frames 0
+fails_with "bench tessellation names a bad time" "--time expects a finite number, got 'soon'" bench tessellation --time soon
+fails_with "bench tessellation checks its outputs before work" "could not write '$work/no/dir/t.csv'" bench tessellation --scenes quad --csv "$work/no/dir/t.csv"
 finish

@@ -8,5 +8,6 @@ namespace specula::app {
 int runRender(std::span<const std::string> arguments);
 int runScenes(std::span<const std::string> arguments);
 int runBench(std::span<const std::string> arguments);
+int runServe(std::span<const std::string> arguments);
 
 }  // namespace specula::app

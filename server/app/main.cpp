@@ -13,6 +13,7 @@ constexpr const char* kUsage =
     "Specula renders accurate reflections on curved mirrors, headless (EGL on a GPU, or Mesa's software GL).\n"
     "\n"
     "commands:\n"
+    "  serve     stream a scene to browsers and thin clients over HTTP + WebSocket (JPEG frames)\n"
     "  render    render one frame of a scene to a PNG or JPEG file and print per-stage timings\n"
     "  scenes    list the built-in scenes\n"
     "  bench     measure time per pass, search steps and accuracy against exact references; CSV and JSON\n"
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   if (command == "render") return specula::app::runRender(rest);
   if (command == "scenes") return specula::app::runScenes(rest);
   if (command == "bench") return specula::app::runBench(rest);
+  if (command == "serve") return specula::app::runServe(rest);
   std::cerr << "specula: unknown command '" << command << "'\n\n" << kUsage;
   return 2;
 }

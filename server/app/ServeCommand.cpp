@@ -1,0 +1,149 @@
+// `specula serve`: the streaming service. HTTP and WebSocket on one port; sessions rendered by GL
+// workers and sent as JPEG frames; SIGTERM or SIGINT closes every client with 1001 within a second.
+#include <pthread.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "app/GlSetup.h"
+#include "app/SceneSource.h"
+#include "app/TessellationOptions.h"
+#include "net/HttpServer.h"
+#include "session/GlFrameRenderer.h"
+#include "session/SessionHub.h"
+
+namespace specula::app {
+
+namespace {
+
+constexpr auto kShutdownGrace = std::chrono::milliseconds(900);  // every client closed within 1 s of SIGTERM
+
+CommandLine serveOptions() {
+  std::vector<OptionSpec> specs = {
+      {"bind", "ADDRESS", "address to listen on; anything but loopback needs --token", "127.0.0.1"},
+      {"port", "PORT", "TCP port; 0 picks a free one (printed at start)", "8080"},
+      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`) or JSON scene file", "checker-sphere"},
+      {"max-sessions", "N", "concurrent sessions; more are refused with close code 1013", "16"},
+      {"token", "SECRET", "clients must send it (?token= or Authorization: Bearer); also read from SPECULA_TOKEN", ""},
+      {"web-root", "DIR", "folder served at / (the browser client)", SPECULA_DEFAULT_WEB_ROOT},
+      {"render-threads", "N", "render workers, each with its own GL context", "1"},
+      {"encode-threads", "N", "JPEG encoder threads", "1"},
+      {"max-fps", "FPS", "frames per second per session at most", "60"},
+      {"still-delay", "MS", "quiet time after input before a full-quality still frame", "150"},
+      {"max-size", "WxH", "largest viewport a client may ask for", "3840x2160"},
+  };
+  for (OptionSpec& spec : tessellationOptions()) {
+    spec.help += " (sessions' default)";
+    specs.push_back(std::move(spec));
+  }
+  specs.push_back(glOption());
+  return CommandLine(
+      "specula serve [--bind ADDRESS] [--port PORT] [--scene NAME|FILE] [--max-sessions N] [--token SECRET] "
+      "[--gl BACKEND] [...]",
+      "Serves a scene to browsers and thin clients on one port:\n"
+      "  GET /         the browser client (files of --web-root)\n"
+      "  GET /healthz  'ok' while the server runs (never needs the token)\n"
+      "  GET /metrics  Prometheus text: sessions, frames sent and skipped, bytes, render/encode/latency histograms\n"
+      "  /ws           WebSocket, subprotocol specula.v1.json (proto3 JSON text) or specula.v1.proto (binary);\n"
+      "                messages are defined in proto/specula.proto\n"
+      "Each session has its own camera, animation clock and settings and is rendered only when something\n"
+      "changed. SIGTERM or SIGINT closes every client with code 1001 and exits.",
+      std::move(specs));
+}
+
+int fail(const std::string& message) {
+  std::cerr << "specula serve: " << message << "\n";
+  return 1;
+}
+
+}  // namespace
+
+int runServe(std::span<const std::string> arguments) {
+  CommandLine options = serveOptions();
+  if (Status status = options.parse(arguments); !status) return fail(status.error());
+  if (options.helpRequested()) {
+    std::cout << options.help();
+    return 0;
+  }
+  auto port = options.integer("port", 0, 65535);
+  auto maxSessions = options.integer("max-sessions", 1, 4096);
+  auto renderThreads = options.integer("render-threads", 1, 64);
+  auto encodeThreads = options.integer("encode-threads", 1, 64);
+  auto stillDelay = options.integer("still-delay", 0, 60000);
+  auto maxFps = options.number("max-fps");
+  auto maxSize = options.size("max-size", 16384);
+  auto tessellation = parseTessellationOptions(options);
+  for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
+                               renderThreads ? Status{} : Error{renderThreads.error()},
+                               encodeThreads ? Status{} : Error{encodeThreads.error()},
+                               stillDelay ? Status{} : Error{stillDelay.error()}, maxFps ? Status{} : Error{maxFps.error()},
+                               maxSize ? Status{} : Error{maxSize.error()},
+                               tessellation ? Status{} : Error{tessellation.error()}})
+    if (!status) return fail(status.error());
+  if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
+  if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
+
+  net::ServerOptions serverOptions;
+  serverOptions.bindAddress = options.text("bind");
+  serverOptions.port = static_cast<std::uint16_t>(*port);
+  serverOptions.token = options.has("token") ? options.text("token")
+                        : std::getenv("SPECULA_TOKEN") ? std::getenv("SPECULA_TOKEN")
+                                                       : "";
+  serverOptions.webRoot = options.text("web-root");
+  if (!net::isLoopbackAddress(serverOptions.bindAddress) && serverOptions.token.empty())
+    return fail("refusing to serve on " + serverOptions.bindAddress +
+                " without a token: pass --token SECRET (or set SPECULA_TOKEN), or bind 127.0.0.1");
+
+  auto scene = loadScene(options.text("scene"));
+  if (!scene) return fail(scene.error());
+
+  // Block the shutdown signals before any thread starts, so every thread inherits the mask and the main
+  // thread alone receives them through sigwait.
+  sigset_t shutdownSignals;
+  sigemptyset(&shutdownSignals);
+  sigaddset(&shutdownSignals, SIGTERM);
+  sigaddset(&shutdownSignals, SIGINT);
+  pthread_sigmask(SIG_BLOCK, &shutdownSignals, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  session::HubOptions hubOptions;
+  hubOptions.maxSessions = *maxSessions;
+  hubOptions.maxWidth = maxSize->first;
+  hubOptions.maxHeight = maxSize->second;
+  hubOptions.stillDelay = std::chrono::milliseconds(*stillDelay);
+  hubOptions.maxFps = *maxFps;
+  hubOptions.maxMessageBytes = serverOptions.maxMessageBytes;
+  hubOptions.defaults.reflection.tessellation = *tessellation;
+  hubOptions.scheduler = {*renderThreads, *encodeThreads};
+  const std::string backend = options.text("gl");
+  auto rendererFactory = [backend, scene = *scene]() -> Result<std::unique_ptr<session::FrameRenderer>> {
+    auto context = openGlContext(backend);
+    if (!context) return Error{context.error()};
+    return session::GlFrameRenderer::create(std::move(*context), scene);
+  };
+  auto hub = session::SessionHub::start(*scene, hubOptions, rendererFactory);
+  if (!hub) return fail(hub.error());
+  serverOptions.metricsText = [hubPointer = hub->get()] { return hubPointer->metrics().prometheusText(); };
+  auto server = net::HttpServer::start(serverOptions, **hub);
+  if (!server) return fail(server.error());
+
+  std::printf("specula serve: scene '%s' at http://%s:%u/ (WebSocket /ws); listening on %s:%u\n", (*scene)->name.c_str(),
+              serverOptions.bindAddress.c_str(), (*server)->port(), serverOptions.bindAddress.c_str(), (*server)->port());
+  std::fflush(stdout);
+
+  int signal = 0;
+  sigwait(&shutdownSignals, &signal);
+  std::fprintf(stderr, "specula serve: %s: closing %zu sessions\n", signal == SIGTERM ? "SIGTERM" : "SIGINT",
+               (*hub)->sessionCount());
+  (*hub)->refuseNewSessions();
+  (*server)->shutdown(kShutdownGrace);
+  (*hub)->stop();
+  server->reset();
+  return 0;
+}
+
+}  // namespace specula::app

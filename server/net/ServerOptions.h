@@ -1,0 +1,29 @@
+#pragma once
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace specula::net {
+
+// Everything the network layer needs to know; defaults are the service's.
+struct ServerOptions {
+  std::string bindAddress = "127.0.0.1";
+  std::uint16_t port = 8080;  // 0: any free port (HttpServer::port() tells which)
+  std::string token;          // non-empty: every route but /healthz demands it
+  std::filesystem::path webRoot;  // files served at / (index.html for "/"); empty: none
+  std::size_t maxMessageBytes = 64 * 1024;  // client WebSocket messages; larger closes with 1009
+  std::size_t maxConnections = 256;         // open TCP connections; more are closed at once
+  std::size_t maxQueuedControlMessages = 64;
+  std::chrono::milliseconds handshakeTimeout{5000};  // HTTP request or WebSocket upgrade
+  std::chrono::milliseconds writeTimeout{5000};      // one message to a client that stopped reading
+  std::chrono::milliseconds idleTimeout{60000};      // no data (pings answered count) from the client
+  std::function<std::string()> metricsText;          // GET /metrics body (Prometheus text format)
+};
+
+// True for 127.0.0.0/8, ::1 and "localhost": the addresses that need no token.
+bool isLoopbackAddress(const std::string& address);
+
+}  // namespace specula::net

@@ -1,0 +1,44 @@
+#include "session/GlFrameRenderer.h"
+
+#include <chrono>
+
+namespace specula::session {
+
+Result<std::unique_ptr<FrameRenderer>> GlFrameRenderer::create(std::unique_ptr<gl::GlContext> context,
+                                                               std::shared_ptr<const scene::Scene> scene) {
+  auto renderer = render::Renderer::create(*context, std::move(scene));
+  if (!renderer) return Error{renderer.error()};
+  return std::unique_ptr<FrameRenderer>(new GlFrameRenderer(std::move(context), std::move(*renderer)));
+}
+
+GlFrameRenderer::~GlFrameRenderer() { renderer_.reset(); }
+
+Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
+  if (job.session != lastSession_) renderer_->resetCoherence();  // last frame's texels were another view's
+  lastSession_ = job.session;
+  const auto start = std::chrono::steady_clock::now();
+  auto frame = renderer_->render(job.pose, job.width, job.height, job.settings);
+  if (!frame) return Error{frame.error()};
+  RenderOutput out;
+  out.renderMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.width = frame->width;
+  out.height = frame->height;
+  out.rgba = std::move(frame->rgba);
+  for (const render::StageTiming& stage : frame->timings.stages) out.stageMs.emplace_back(stage.name, stage.milliseconds);
+  const passes::SearchStatistics& search = frame->search;
+  out.search.set_mirrors(static_cast<std::uint32_t>(frame->drawnMirrors.size()));
+  out.search.set_searched(search.searched);
+  out.search.set_mean_steps(search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0);
+  out.search.set_max_steps(search.maxSteps);
+  out.search.set_cold_starts(search.coldStarts);
+  out.search.set_hidden(search.hidden);
+  out.search.set_unsolved(search.unsolved);
+  const passes::TessellationStatistics& tessellation = frame->tessellation;
+  out.tessellation.set_input_triangles(tessellation.inputTriangles);
+  out.tessellation.set_finished_triangles(tessellation.finishedTriangles);
+  out.tessellation.set_midpoint_searches(tessellation.midpointSearches.searched);
+  out.tessellation.set_capped(tessellation.capped);
+  return out;
+}
+
+}  // namespace specula::session

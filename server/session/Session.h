@@ -1,0 +1,89 @@
+#pragma once
+// One client's session: protocol dispatch and validation, its state (camera, clock, overrides,
+// settings), and the decision when it needs a frame. Messages arrive on the connection's strand;
+// the scheduler's threads take render jobs and deliver encoded frames; a mutex guards the state.
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "net/Connection.h"
+#include "session/FrameRenderer.h"
+#include "session/SessionState.h"
+
+namespace specula::session {
+
+class SessionHub;
+
+// A render job plus what the frame message will say about it.
+struct FrameRequest {
+  RenderJob job;
+  bool still = true;  // full quality; false while input keeps arriving
+  int jpegQuality = 85;
+  std::uint64_t inputSequence = 0;
+  double clientTimeMs = 0.0;
+  Clock::time_point inputArrival{};
+  double sceneMs = 0.0;
+};
+
+class Session : public net::ConnectionHandler, public std::enable_shared_from_this<Session> {
+ public:
+  Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, net::Encoding encoding);
+
+  const std::string& id() const { return id_; }
+  std::uint64_t number() const { return number_; }
+
+  // net::ConnectionHandler
+  void onMessage(std::string_view payload, bool text) override;
+  void onOversizedMessage() override;
+  void onFrameSent(std::size_t bytes) override;
+  void onFrameReplaced() override;
+  void onClosed() override;
+
+  // Scheduler side. `due` says whether a frame should start now, else when to look again (nullopt:
+  // not until something changes); `takeFrame` starts one, and the frame ends in deliver or renderFailed.
+  struct Due {
+    bool now = false;
+    std::optional<Clock::time_point> wakeAt;
+  };
+  Due due(Clock::time_point now) const;
+  FrameRequest takeFrame(Clock::time_point now);
+  void deliver(const FrameRequest& request, const RenderOutput& output, std::string jpeg, double encodeMs);
+  void renderFailed(const FrameRequest& request, const std::string& message);
+
+ private:
+  void handle(const v1::ClientMessage& message, Clock::time_point now);
+  void onHello(const v1::Hello& hello, Clock::time_point now);
+  Status applyCamera(const v1::CameraUpdate& camera);
+  Status applyAnimation(const v1::AnimationControl& animation, Clock::time_point now);
+  Status applySettings(const v1::RenderSettings& settings);
+  Status applyResize(const v1::Resize& resize);
+  void noteInput(std::uint64_t sequence, double clientTimeMs, Clock::time_point now);  // state_ locked
+  v1::Welcome welcome(bool resumed, Clock::time_point now) const;                     // state_ locked
+  void send(const v1::ServerMessage& message);
+  void sendError(v1::Error::Code code, const std::string& message);
+  void closeForBadMessage(net::CloseCode code, v1::Error::Code errorCode, const std::string& message);
+
+  SessionHub& hub_;
+  const net::Encoding encoding_;
+  const std::string id_;
+  const std::uint64_t number_;  // process-unique, for renderer coherence
+  std::string resumeToken_;
+
+  mutable std::mutex mutex_;  // guards everything below
+  std::shared_ptr<net::MessageSink> sink_;  // null once closed
+  bool greeted_ = false;
+  SessionState state_;
+  bool dirty_ = false;        // something changed since the last frame started
+  bool busy_ = false;         // a frame is being rendered or encoded
+  bool lastFrameStill_ = true;
+  bool renderBroken_ = false;  // the last render failed: wait for new input before retrying
+  Clock::time_point lastInputAt_{};
+  Clock::time_point lastFrameStart_{};
+  std::uint64_t inputSequence_ = 0;
+  double inputClientTimeMs_ = 0.0;
+  Clock::time_point inputArrival_{};
+  std::uint64_t framesStarted_ = 0, framesDelivered_ = 0, framesSent_ = 0, framesSkipped_ = 0, bytesSent_ = 0;
+};
+
+}  // namespace specula::session

@@ -1,0 +1,34 @@
+#pragma once
+// What a session controls, as plain data: saved for resume and snapshotted for each render.
+#include <cstdint>
+#include <map>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "math/Camera.h"
+#include "passes/ReflectionSettings.h"
+#include "session/AnimationClock.h"
+
+namespace specula::session {
+
+struct SessionSettings {
+  passes::ReflectionSettings reflection;
+  float resolutionScale = 1.0f;  // (0, 1]: frames are rendered this much smaller
+  int jpegQuality = 85;          // still frames
+  int interactiveQuality = 60;   // frames sent while input keeps arriving
+};
+
+struct SessionState {
+  int width = 0, height = 0;           // the client's viewport
+  std::optional<math::Camera> camera;  // nullopt: the scene's own (possibly animated) camera
+  AnimationClock clock;
+  std::map<std::uint32_t, glm::mat4> overrides;  // object index → object-to-world, replacing the animation
+  SessionSettings settings;
+  bool playOnResume = false;  // saved sessions: whether the (paused) clock plays again on resume
+
+  // The frame size to render: the viewport times the resolution scale, at least 1×1.
+  std::pair<int, int> renderSize() const;
+};
+
+}  // namespace specula::session

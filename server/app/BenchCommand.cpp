@@ -9,6 +9,7 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
+#include "app/OutputFiles.h"
 #include "app/SceneSource.h"
 #include "bench/BenchReport.h"
 #include "bench/SceneBenchmark.h"
@@ -56,21 +57,6 @@ std::vector<std::string> sceneList(const CommandLine& options, const std::vector
   for (std::string name; std::getline(list, name, ',');)
     if (!name.empty()) names.push_back(name);
   return names;
-}
-
-std::string unwritable(const std::string& path) { return "could not write '" + path + "': check the folder exists and is writable"; }
-
-// Opening for append creates a missing file but keeps an earlier run's results until the new ones exist.
-Status checkWritable(const std::string& path) {
-  if (!std::ofstream(path, std::ios::binary | std::ios::app)) return Error{unwritable(path)};
-  return {};
-}
-
-Status writeFile(const std::string& path, const std::string& text) {
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text;
-  if (!file) return Error{unwritable(path)};
-  return {};
 }
 
 // Loads every scene up front, so a typo fails before the long part.
@@ -169,6 +155,7 @@ int runTessellationBench(std::span<const std::string> arguments) {
 
 int runBench(std::span<const std::string> arguments) {
   if (!arguments.empty() && arguments.front() == "tessellation") return runTessellationBench(arguments.subspan(1));
+  if (!arguments.empty() && arguments.front() == "serve") return runServeBench(arguments.subspan(1));
   CommandLine options = benchOptions();
   if (Status status = options.parse(arguments); !status) return fail(status.error());
   if (options.helpRequested()) {

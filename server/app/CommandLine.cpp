@@ -1,5 +1,6 @@
 #include "app/CommandLine.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -82,14 +83,57 @@ Result<double> CommandLine::number(const std::string& name) const {
   return Error{"--" + name + " expects a finite number, got '" + value + "'"};
 }
 
-Result<int> CommandLine::integer(const std::string& name, int low, int high) const {
-  const std::string value = text(name);
+namespace {
+
+Result<int> parseInteger(const std::string& name, const std::string& value, int low, int high) {
   int parsed = 0;
   const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
   if (error != std::errc() || end != value.data() + value.size() || parsed < low || parsed > high)
     return Error{"--" + name + " expects an integer in [" + std::to_string(low) + ", " + std::to_string(high) +
                  "], got '" + value + "'"};
   return parsed;
+}
+
+Result<std::pair<int, int>> parseSize(const std::string& name, const std::string& value, int maxSide) {
+  const std::size_t x = value.find('x');
+  int width = 0, height = 0;
+  if (x != std::string::npos) {
+    const auto w = std::from_chars(value.data(), value.data() + x, width);
+    const auto h = std::from_chars(value.data() + x + 1, value.data() + value.size(), height);
+    if (w.ec == std::errc() && w.ptr == value.data() + x && h.ec == std::errc() &&
+        h.ptr == value.data() + value.size() && width >= 1 && height >= 1 && width <= maxSide && height <= maxSide)
+      return std::pair{width, height};
+  }
+  return Error{"--" + name + " expects WIDTHxHEIGHT with sides in [1, " + std::to_string(maxSide) +
+               "] like 640x480, got '" + value + "'"};
+}
+
+// Applies `parse` to each comma-separated item; fails on the first bad one or on an empty list.
+template <class T, class Parse>
+Result<std::vector<T>> parseList(const std::string& name, const std::string& value, Parse parse) {
+  std::vector<T> items;
+  std::size_t start = 0;
+  while (start <= value.size()) {
+    const std::size_t comma = std::min(value.find(',', start), value.size());
+    if (comma > start) {
+      auto item = parse(value.substr(start, comma - start));
+      if (!item) return Error{item.error()};
+      items.push_back(*item);
+    }
+    start = comma + 1;
+  }
+  if (items.empty()) return Error{"--" + name + " lists nothing"};
+  return items;
+}
+
+}  // namespace
+
+Result<int> CommandLine::integer(const std::string& name, int low, int high) const {
+  return parseInteger(name, text(name), low, high);
+}
+
+Result<std::vector<int>> CommandLine::integerList(const std::string& name, int low, int high) const {
+  return parseList<int>(name, text(name), [&](const std::string& item) { return parseInteger(name, item, low, high); });
 }
 
 Result<glm::vec3> CommandLine::vector3(const std::string& name) const {
@@ -110,18 +154,12 @@ Result<glm::vec3> CommandLine::vector3(const std::string& name) const {
 }
 
 Result<std::pair<int, int>> CommandLine::size(const std::string& name, int maxSide) const {
-  const std::string value = text(name);
-  const std::size_t x = value.find('x');
-  int width = 0, height = 0;
-  if (x != std::string::npos) {
-    const auto w = std::from_chars(value.data(), value.data() + x, width);
-    const auto h = std::from_chars(value.data() + x + 1, value.data() + value.size(), height);
-    if (w.ec == std::errc() && w.ptr == value.data() + x && h.ec == std::errc() &&
-        h.ptr == value.data() + value.size() && width >= 1 && height >= 1 && width <= maxSide && height <= maxSide)
-      return std::pair{width, height};
-  }
-  return Error{"--" + name + " expects WIDTHxHEIGHT with sides in [1, " + std::to_string(maxSide) +
-               "] like 640x480, got '" + value + "'"};
+  return parseSize(name, text(name), maxSide);
+}
+
+Result<std::vector<std::pair<int, int>>> CommandLine::sizeList(const std::string& name, int maxSide) const {
+  return parseList<std::pair<int, int>>(name, text(name),
+                                        [&](const std::string& item) { return parseSize(name, item, maxSide); });
 }
 
 }  // namespace specula::app

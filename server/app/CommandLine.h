@@ -37,6 +37,9 @@ class CommandLine {
   Result<int> integer(const std::string& name, int low, int high) const;
   Result<glm::vec3> vector3(const std::string& name) const;
   Result<std::pair<int, int>> size(const std::string& name, int maxSide) const;
+  // Comma-separated lists of the same ("1,4,16", "640x360,1280x720").
+  Result<std::vector<int>> integerList(const std::string& name, int low, int high) const;
+  Result<std::vector<std::pair<int, int>>> sizeList(const std::string& name, int maxSide) const;
 
  private:
   const OptionSpec* find(const std::string& name) const;

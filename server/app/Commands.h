@@ -9,5 +9,6 @@ int runRender(std::span<const std::string> arguments);
 int runScenes(std::span<const std::string> arguments);
 int runBench(std::span<const std::string> arguments);
 int runServe(std::span<const std::string> arguments);
+int runServeBench(std::span<const std::string> arguments);  // `specula bench serve`
 
 }  // namespace specula::app

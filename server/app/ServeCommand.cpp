@@ -12,9 +12,7 @@
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
 #include "app/TessellationOptions.h"
-#include "net/HttpServer.h"
-#include "session/GlFrameRenderer.h"
-#include "session/SessionHub.h"
+#include "app/Service.h"
 
 namespace specula::app {
 
@@ -110,39 +108,30 @@ int runServe(std::span<const std::string> arguments) {
   pthread_sigmask(SIG_BLOCK, &shutdownSignals, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
 
-  session::HubOptions hubOptions;
-  hubOptions.maxSessions = *maxSessions;
-  hubOptions.maxWidth = maxSize->first;
-  hubOptions.maxHeight = maxSize->second;
-  hubOptions.stillDelay = std::chrono::milliseconds(*stillDelay);
-  hubOptions.maxFps = *maxFps;
-  hubOptions.maxMessageBytes = serverOptions.maxMessageBytes;
-  hubOptions.defaults.reflection.tessellation = *tessellation;
-  hubOptions.scheduler = {*renderThreads, *encodeThreads};
-  const std::string backend = options.text("gl");
-  auto rendererFactory = [backend, scene = *scene]() -> Result<std::unique_ptr<session::FrameRenderer>> {
-    auto context = openGlContext(backend);
-    if (!context) return Error{context.error()};
-    return session::GlFrameRenderer::create(std::move(*context), scene);
-  };
-  auto hub = session::SessionHub::start(*scene, hubOptions, rendererFactory);
-  if (!hub) return fail(hub.error());
-  serverOptions.metricsText = [hubPointer = hub->get()] { return hubPointer->metrics().prometheusText(); };
-  auto server = net::HttpServer::start(serverOptions, **hub);
-  if (!server) return fail(server.error());
+  ServiceConfig config;
+  config.scene = *scene;
+  config.glBackend = options.text("gl");
+  config.hub.maxSessions = *maxSessions;
+  config.hub.maxWidth = maxSize->first;
+  config.hub.maxHeight = maxSize->second;
+  config.hub.stillDelay = std::chrono::milliseconds(*stillDelay);
+  config.hub.maxFps = *maxFps;
+  config.hub.defaults.reflection.tessellation = *tessellation;
+  config.hub.scheduler = {*renderThreads, *encodeThreads};
+  config.server = serverOptions;
+  auto service = Service::start(std::move(config));
+  if (!service) return fail(service.error());
 
+  const unsigned listeningPort = (*service)->port();
   std::printf("specula serve: scene '%s' at http://%s:%u/ (WebSocket /ws); listening on %s:%u\n", (*scene)->name.c_str(),
-              serverOptions.bindAddress.c_str(), (*server)->port(), serverOptions.bindAddress.c_str(), (*server)->port());
+              serverOptions.bindAddress.c_str(), listeningPort, serverOptions.bindAddress.c_str(), listeningPort);
   std::fflush(stdout);
 
   int signal = 0;
   sigwait(&shutdownSignals, &signal);
   std::fprintf(stderr, "specula serve: %s: closing %zu sessions\n", signal == SIGTERM ? "SIGTERM" : "SIGINT",
-               (*hub)->sessionCount());
-  (*hub)->refuseNewSessions();
-  (*server)->shutdown(kShutdownGrace);
-  (*hub)->stop();
-  server->reset();
+               (*service)->hub().sessionCount());
+  (*service)->stop(kShutdownGrace);
   return 0;
 }
 

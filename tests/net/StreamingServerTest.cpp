@@ -1,6 +1,9 @@
 // The streaming service end to end on loopback: real Beast server, real WebSocket clients, fake renderer.
 #include <turbojpeg.h>
 
+#include <numeric>
+
+#include "LoadRun.h"
 #include "ServerRig.h"
 
 namespace specula::testing {
@@ -297,7 +300,7 @@ TEST(StreamingServerLimits, BeyondMaxSessionsAClientIsRefusedClearly) {
 TEST(StreamingServerLimits, AClientThatStopsReadingIsDroppedWithItsSkippedFramesCounted) {
   RigOptions options = defaultRigOptions();
   options.renderer.noise = true;  // incompressible frames fill the socket buffers quickly
-  options.server.writeTimeout = 300ms;
+  options.server.writeTimeout = 1500ms;  // long enough for newer frames to replace a waiting one first
   ServerRig rig(options);
   auto reader = rig.connect();
   ASSERT_TRUE(reader);
@@ -416,6 +419,65 @@ TEST(StreamingServerHttp, ServesHealthMetricsAndStaticFilesAndNothingOutsideTheW
     EXPECT_EQ(httpRequest(rig.port(), outside).status, 404) << outside;
   EXPECT_EQ(httpRequest(rig.port(), "/healthz", boost::beast::http::verb::post).status, 405);
   EXPECT_EQ(httpRequest(rig.port(), "/ws").status, 426);
+}
+
+}  // namespace
+}  // namespace specula::testing
+
+namespace specula::testing {
+namespace {
+
+TEST(LoadRun, MeasuresEverySessionAgainstARealServer) {
+  RigOptions options = defaultRigOptions();
+  options.renderer.delay = 5ms;
+  ServerRig rig(options);
+  client::LoadOptions load;
+  load.address = {"127.0.0.1", rig.port(), ""};
+  load.sessions = 3;
+  load.width = 64;
+  load.height = 32;
+  load.warmup = 200ms;
+  load.duration = 1000ms;
+  int progressCalls = 0;
+  load.progress = [&](double, std::uint64_t) { ++progressCalls; };
+  const client::LoadReport report = client::runLoad(load);
+  ASSERT_EQ(report.sessions.size(), 3u);
+  EXPECT_EQ(report.errors, 0u);
+  for (const client::SessionLoad& session : report.sessions) {
+    EXPECT_GT(session.frames, 5u) << session.error;
+    EXPECT_FALSE(session.latencyMs.empty());
+  }
+  EXPECT_GT(report.fpsMin, 5.0);
+  EXPECT_GT(report.latencyP50, 0.0);
+  EXPECT_GE(report.latencyP99, report.latencyP50);
+  EXPECT_GE(report.latencyMax, report.latencyP99);
+  EXPECT_NEAR(report.renderMsMean, 5.0, 3.0) << "server timings are carried through";
+  EXPECT_GT(report.bytesPerFrame, 100.0);
+  EXPECT_GE(progressCalls, 1);
+  const std::string json = client::loadReportJson(report);
+  for (const char* key : {"\"fps_per_session_mean\"", "\"latency_ms_p99\"", "\"bytes_per_frame\"", "\"sessions\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+}
+
+TEST(LoadRun, ReportsAnUnreachableServerAsSessionErrors) {
+  client::LoadOptions load;
+  load.address = {"127.0.0.1", 1, ""};  // nothing listens on port 1
+  load.sessions = 2;
+  load.warmup = 0ms;
+  load.duration = 200ms;
+  const client::LoadReport report = client::runLoad(load);
+  EXPECT_EQ(report.errors, 2u);
+  EXPECT_NE(report.sessions[0].error.find("cannot connect to 127.0.0.1:1"), std::string::npos) << report.sessions[0].error;
+}
+
+TEST(LoadRun, PercentilesUseNearestRank) {
+  EXPECT_EQ(client::percentile({}, 50), 0.0);
+  EXPECT_EQ(client::percentile({5, 1, 3, 2, 4}, 50), 3.0);
+  EXPECT_EQ(client::percentile({5, 1, 3, 2, 4}, 100), 5.0);
+  EXPECT_EQ(client::percentile({5, 1, 3, 2, 4}, 0), 1.0);
+  std::vector<double> hundred(100);
+  std::iota(hundred.begin(), hundred.end(), 1.0);
+  EXPECT_EQ(client::percentile(hundred, 99), 99.0);
 }
 
 }  // namespace

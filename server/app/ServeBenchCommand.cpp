@@ -1,0 +1,147 @@
+// `specula bench serve`: the streaming service under load on loopback. An in-process server with the
+// GL renderer, and 1, 4 and 16 client sessions at each size sending camera updates at 60 Hz.
+#include <cstdio>
+#include <iostream>
+
+#include "LoadRun.h"
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "app/GlSetup.h"
+#include "app/OutputFiles.h"
+#include "app/SceneSource.h"
+#include "app/Service.h"
+
+namespace specula::app {
+
+namespace {
+
+CommandLine serveBenchOptions() {
+  return CommandLine(
+      "specula bench serve [--scene NAME|FILE] [--sessions LIST] [--sizes LIST] [--seconds S] [--warmup S] "
+      "[--encoding proto|json] [--render-threads N] [--csv FILE] [--json FILE] [--gl BACKEND]",
+      "Starts the streaming service in this process on a free loopback port and, for every (sessions, size),\n"
+      "runs that many WebSocket clients, each orbiting the scene on its own camera path and sending camera\n"
+      "updates at 60 Hz. Measures per session: frames per second, input-to-frame latency (a camera update\n"
+      "sent → the first frame reflecting it received) p50/p99, render and encode time per frame, bytes per\n"
+      "frame and frames skipped (latest wins). Checks p99 latency against two frame intervals.",
+      {
+          {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
+          {"sessions", "LIST", "comma-separated session counts", "1,4,16"},
+          {"sizes", "LIST", "comma-separated frame sizes", "640x360,1280x720"},
+          {"seconds", "S", "measured seconds per configuration", "5"},
+          {"warmup", "S", "seconds per configuration before measuring", "1"},
+          {"encoding", "proto|json", "WebSocket subprotocol the clients use", "proto"},
+          {"render-threads", "N", "server render workers (GL contexts)", "1"},
+          {"csv", "FILE", "CSV output, one row per configuration", "serve.csv"},
+          {"json", "FILE", "JSON output", "serve.json"},
+          glOption(),
+      });
+}
+
+int fail(const std::string& message) {
+  std::cerr << "specula bench serve: " << message << "\n";
+  return 1;
+}
+
+std::string number(double value, int decimals) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+}  // namespace
+
+int runServeBench(std::span<const std::string> arguments) {
+  CommandLine options = serveBenchOptions();
+  if (Status status = options.parse(arguments); !status) return fail(status.error());
+  if (options.helpRequested()) {
+    std::cout << options.help();
+    return 0;
+  }
+  auto seconds = options.number("seconds");
+  auto warmup = options.number("warmup");
+  auto renderThreads = options.integer("render-threads", 1, 64);
+  if (!seconds || *seconds <= 0.0 || *seconds > 3600.0) return fail("--seconds expects a number in (0, 3600]");
+  if (!warmup || *warmup < 0.0 || *warmup > 600.0) return fail("--warmup expects a number in [0, 600]");
+  if (!renderThreads) return fail(renderThreads.error());
+  const std::string encoding = options.text("encoding");
+  if (encoding != "proto" && encoding != "json") return fail("--encoding expects proto or json, got '" + encoding + "'");
+  if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
+  auto sessionCounts = options.integerList("sessions", 1, 256);
+  auto sizes = options.sizeList("sizes", 4096);
+  if (!sessionCounts) return fail(sessionCounts.error());
+  if (!sizes) return fail(sizes.error());
+  for (const char* output : {"csv", "json"})
+    if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
+  auto scene = loadScene(options.text("scene"));
+  if (!scene) return fail(scene.error());
+
+  int maxSessions = 0;
+  for (int count : *sessionCounts) maxSessions = std::max(maxSessions, count);
+  ServiceConfig config;
+  config.scene = *scene;
+  config.glBackend = options.text("gl");
+  config.hub.maxSessions = maxSessions;
+  config.hub.scheduler.renderThreads = *renderThreads;
+  config.server.port = 0;
+  auto service = Service::start(std::move(config));
+  if (!service) return fail(service.error());
+
+  std::string csv = "scene,sessions,width,height,seconds,fps_per_session_mean,fps_per_session_min,latency_ms_p50,"
+                    "latency_ms_p99,two_frame_intervals_ms,render_ms_mean,encode_ms_mean,bytes_per_frame,"
+                    "skipped_frames,errors\n";
+  std::string json = "{\"scene\": \"" + (*scene)->name + "\", \"runs\": [\n";
+  std::string table =
+      "sessions  size       fps/session (min)  latency p50   p99 ms  2 intervals  render ms  encode ms  KB/frame  "
+      "skipped  errors\n";
+  const std::size_t total = sessionCounts->size() * sizes->size();
+  std::size_t done = 0;
+  for (const auto& [width, height] : *sizes) {
+    for (int sessions : *sessionCounts) {
+      client::LoadOptions load;
+      load.address = {"127.0.0.1", (*service)->port(), ""};
+      load.encoding = encoding == "proto" ? net::Encoding::Proto : net::Encoding::Json;
+      load.sessions = sessions;
+      load.width = width;
+      load.height = height;
+      load.duration = std::chrono::milliseconds(static_cast<long>(*seconds * 1000.0));
+      load.warmup = std::chrono::milliseconds(static_cast<long>(*warmup * 1000.0));
+      const std::string label = std::to_string(sessions) + " x " + std::to_string(width) + "x" + std::to_string(height);
+      ++done;
+      load.progress = [&](double elapsed, std::uint64_t frames) {
+        std::fprintf(stderr, "\rbench serve [%zu/%zu] %s: %.0f/%.0f s, %llu frames   ", done, total, label.c_str(),
+                     elapsed, *seconds, static_cast<unsigned long long>(frames));
+      };
+      const client::LoadReport report = client::runLoad(load);
+      std::fprintf(stderr, "\n");
+      for (const client::SessionLoad& session : report.sessions)
+        if (!session.error.empty()) std::fprintf(stderr, "  session error: %s\n", session.error.c_str());
+      const double twoIntervals = report.fpsMean > 0.0 ? 2000.0 / report.fpsMean : 0.0;
+      char row[512];
+      std::snprintf(row, sizeof row, "%8d  %4dx%-4d  %8.1f (%5.1f)     %8.1f  %8.1f  %11.1f  %9.1f  %9.2f  %8.1f  %7llu  %6llu\n",
+                    sessions, width, height, report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99,
+                    twoIntervals, report.renderMsMean, report.encodeMsMean, report.bytesPerFrame / 1024.0,
+                    static_cast<unsigned long long>(report.skippedFrames), static_cast<unsigned long long>(report.errors));
+      table += row;
+      csv += (*scene)->name + "," + std::to_string(sessions) + "," + std::to_string(width) + "," +
+             std::to_string(height) + "," + number(report.seconds, 1) + "," + number(report.fpsMean, 2) + "," +
+             number(report.fpsMin, 2) + "," + number(report.latencyP50, 2) + "," + number(report.latencyP99, 2) + "," +
+             number(twoIntervals, 2) + "," + number(report.renderMsMean, 2) + "," + number(report.encodeMsMean, 2) +
+             "," + number(report.bytesPerFrame, 0) + "," + std::to_string(report.skippedFrames) + "," +
+             std::to_string(report.errors) + "\n";
+      json += std::string(done > 1 ? ",\n" : "") + client::loadReportJson(report);
+    }
+  }
+  json += "\n]}\n";
+  (*service)->stop();
+  std::cout << "scene " << (*scene)->name << ", " << encoding << " encoding, " << *renderThreads
+            << " render thread(s); latency = camera update sent -> frame reflecting it received\n"
+            << table;
+  for (const char* option : {"csv", "json"})
+    if (Status status = writeFile(options.text(option), option == std::string("csv") ? csv : json); !status)
+      return fail(status.error());
+  std::cout << "wrote " << options.text("csv") << " and " << options.text("json") << "\n";
+  return 0;
+}
+
+}  // namespace specula::app

@@ -16,11 +16,14 @@ build_packages=(
   libturbojpeg0-dev libboost-dev libprotobuf-dev protobuf-compiler
   libembree-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
   libgtest-dev
+  chromium xvfb xauth   # tests: the browser client in headless Chromium, specula-view under Xvfb
 )
 
 packages=("${runtime_packages[@]}")
 if [[ "${1:-}" != "--runtime" ]]; then
   packages+=("${build_packages[@]}")
+  # The browser test drives Chromium from Node >= 20 (its WebSocket); keep a newer Node if one is there.
+  command -v node >/dev/null || packages+=(nodejs)
 fi
 
 sudo=""

@@ -423,6 +423,11 @@ void Session::deliver(const FrameRequest& request, const RenderOutput& output, s
   *frame.mutable_search() = output.search;
   *frame.mutable_tessellation() = output.tessellation;
   frame.set_jpeg(std::move(jpeg));
+  const math::Camera& camera = request.job.pose.camera;
+  *frame.mutable_camera()->mutable_eye() = toProto(camera.eye);
+  *frame.mutable_camera()->mutable_target() = toProto(camera.target);
+  *frame.mutable_camera()->mutable_up() = toProto(camera.up);
+  frame.mutable_camera()->set_fov_degrees(camera.fovYDegrees);
   std::shared_ptr<net::MessageSink> sink;
   {
     std::lock_guard lock(mutex_);

@@ -1,0 +1,362 @@
+// Specula browser client: plain JavaScript, no build step. Speaks specula.v1.json (proto3 JSON of
+// proto/specula.proto) over the server's /ws WebSocket, draws the JPEG frames on a canvas and turns
+// mouse, touch and keys into camera updates.
+'use strict';
+
+(() => {
+  const params = new URLSearchParams(location.search);
+  const canvas = document.getElementById('frame');
+  const context2d = canvas.getContext('2d');
+  const overlay = document.getElementById('overlay');
+  const status = document.getElementById('status');
+  const $ = (id) => document.getElementById(id);
+
+  // Everything the page knows; exposed as window.specula for tests and curious users.
+  const state = {
+    socket: null,
+    welcome: null,
+    limits: { max_width: 3840, max_height: 2160 },
+    camera: null,          // { target: [x,y,z], up: [x,y,z], yaw, pitch, radius, fov } once known
+    cameraOwned: false,    // true once this page has sent a camera: the scene's camera no longer drives it
+    sequence: 0,
+    sentAt: new Map(),     // sequence → performance.now() when sent, for input-to-frame latency
+    frame: null,           // the last frame drawn (without its JPEG)
+    framesDrawn: 0,
+    frameTimes: [],        // performance.now() of recent frames, for fps
+    latencyMs: null,
+    playing: true,
+    resumeToken: sessionStorage.getItem('specula.resume') || '',
+    reconnectDelayMs: 500,
+    decoding: false,
+    pendingFrame: null,
+    bitmap: null,          // the last decoded frame, redrawn when the canvas is resized
+  };
+  window.specula = state;
+
+  // ---- status line ----
+  function showStatus(text, kind = 'error') {
+    status.textContent = text;
+    status.className = text ? `visible ${kind}` : '';
+  }
+
+  // ---- connection ----
+  function socketUrl() {
+    const token = params.get('token');
+    return `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws${token ? `?token=${encodeURIComponent(token)}` : ''}`;
+  }
+
+  function send(message) {
+    if (state.socket && state.socket.readyState === WebSocket.OPEN) state.socket.send(JSON.stringify(message));
+  }
+
+  function nextInput() {
+    const sequence = ++state.sequence;
+    const now = performance.now();
+    state.sentAt.set(sequence, now);
+    if (state.sentAt.size > 512) state.sentAt.delete(state.sentAt.keys().next().value);
+    return { sequence, clientTimeMs: now };
+  }
+
+  function connect() {
+    const socket = new WebSocket(socketUrl(), ['specula.v1.json']);
+    state.socket = socket;
+    socket.onopen = () => {
+      const [width, height] = viewportSize();
+      const hello = { protocolVersion: 1, width, height, quality: Number($('quality').value) };
+      if (state.resumeToken) hello.resumeToken = state.resumeToken;
+      send({ hello });
+    };
+    socket.onmessage = (event) => {
+      let message;
+      try { message = JSON.parse(event.data); } catch (e) { showStatus(`unreadable message from the server: ${e}`); return; }
+      if (message.welcome) onWelcome(message.welcome);
+      else if (message.frame) onFrame(message.frame);
+      else if (message.error) showStatus(`server: ${message.error.message} (${message.error.code})`);
+    };
+    socket.onclose = (event) => onClose(event);
+  }
+
+  const closeExplanations = {
+    1001: 'the server is shutting down',
+    1006: 'the connection was lost',
+    1007: 'the server could not read a message from this page',
+    1008: 'the server refused a message from this page',
+    1009: 'a message from this page was too large',
+    1013: 'the server is full',
+  };
+
+  function onClose(event) {
+    const why = closeExplanations[event.code] || `closed (${event.code})`;
+    const reason = event.reason ? `: ${event.reason}` : '';
+    const retry = [1001, 1006, 1011, 1012, 1013].includes(event.code);
+    if (!retry) {
+      showStatus(`Disconnected — ${why}${reason}. Reload the page to start again.`);
+      return;
+    }
+    const delay = state.reconnectDelayMs;
+    state.reconnectDelayMs = Math.min(8000, delay * 2);
+    showStatus(`Disconnected — ${why}${reason}. Reconnecting in ${(delay / 1000).toFixed(1)} s…`, 'info');
+    setTimeout(connect, delay);
+  }
+
+  // ---- camera ----
+  const toVec = (v) => [v?.x || 0, v?.y || 0, v?.z || 0];
+  const toProto = (a) => ({ x: a[0], y: a[1], z: a[2] });
+  const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+  const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+  const scale = (a, s) => [a[0] * s, a[1] * s, a[2] * s];
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const length = (a) => Math.hypot(a[0], a[1], a[2]);
+  const normalize = (a) => scale(a, 1 / (length(a) || 1));
+
+  // Orbit parameters around the target from a protocol camera (eye, target, up, fov).
+  function orbitFrom(camera) {
+    const eye = toVec(camera.eye), target = toVec(camera.target);
+    const offset = sub(eye, target);
+    const radius = Math.max(1e-3, length(offset));
+    return {
+      target, up: [0, 1, 0], radius, fov: camera.fovDegrees || 45,
+      yaw: Math.atan2(offset[0], offset[2]),
+      pitch: Math.asin(Math.max(-1, Math.min(1, offset[1] / radius))),
+    };
+  }
+
+  function eyeOf(orbit) {
+    const c = Math.cos(orbit.pitch);
+    return add(orbit.target, scale([c * Math.sin(orbit.yaw), Math.sin(orbit.pitch), c * Math.cos(orbit.yaw)], orbit.radius));
+  }
+
+  let cameraDirty = false;
+  function changeCamera(change) {
+    if (!state.camera) return;
+    change(state.camera);
+    state.camera.pitch = Math.max(-1.55, Math.min(1.55, state.camera.pitch));
+    state.camera.radius = Math.max(1e-3, Math.min(1e5, state.camera.radius));
+    state.cameraOwned = true;
+    if (!cameraDirty) {
+      cameraDirty = true;
+      requestAnimationFrame(flushCamera);  // at most one update per display frame
+    }
+  }
+
+  function flushCamera() {
+    cameraDirty = false;
+    const c = state.camera;
+    send({ camera: { eye: toProto(eyeOf(c)), target: toProto(c.target), up: toProto(c.up), fovDegrees: c.fov, ...nextInput() } });
+  }
+
+  function orbitBy(dx, dy) { changeCamera((c) => { c.yaw -= dx * 0.008; c.pitch += dy * 0.008; }); }
+  function zoomBy(factor) { changeCamera((c) => { c.radius *= factor; }); }
+  function panBy(dx, dy) {
+    changeCamera((c) => {
+      const forward = normalize(sub(c.target, eyeOf(c)));
+      const right = normalize(cross(forward, c.up));
+      const up = cross(right, forward);
+      const perPixel = (2 * c.radius * Math.tan((c.fov * Math.PI) / 360)) / Math.max(1, canvas.clientHeight);
+      c.target = add(c.target, add(scale(right, -dx * perPixel), scale(up, dy * perPixel)));
+    });
+  }
+
+  // ---- pointer, wheel and keys ----
+  const pointers = new Map();
+  canvas.addEventListener('pointerdown', (e) => {
+    canvas.setPointerCapture(e.pointerId);
+    pointers.set(e.pointerId, { x: e.clientX, y: e.clientY, pan: e.button === 2 || e.shiftKey });
+    canvas.focus();
+  });
+  canvas.addEventListener('pointermove', (e) => {
+    const last = pointers.get(e.pointerId);
+    if (!last) return;
+    const dx = e.clientX - last.x, dy = e.clientY - last.y;
+    if (pointers.size === 2) {
+      const [a, b] = [...pointers.values()];
+      const other = a === last ? b : a;
+      const before = Math.hypot(last.x - other.x, last.y - other.y);
+      const after = Math.hypot(e.clientX - other.x, e.clientY - other.y);
+      if (before > 0 && after > 0) zoomBy(before / after);
+      panBy(dx / 2, dy / 2);
+    } else if (last.pan) {
+      panBy(dx, dy);
+    } else {
+      orbitBy(dx, dy);
+    }
+    last.x = e.clientX;
+    last.y = e.clientY;
+  });
+  const release = (e) => pointers.delete(e.pointerId);
+  canvas.addEventListener('pointerup', release);
+  canvas.addEventListener('pointercancel', release);
+  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  canvas.addEventListener('wheel', (e) => { e.preventDefault(); zoomBy(Math.exp(e.deltaY * 0.001)); }, { passive: false });
+  document.addEventListener('keydown', (e) => {
+    if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+    const keys = {
+      ArrowLeft: () => orbitBy(-20, 0), ArrowRight: () => orbitBy(20, 0),
+      ArrowUp: () => orbitBy(0, -20), ArrowDown: () => orbitBy(0, 20),
+      '+': () => zoomBy(0.9), '=': () => zoomBy(0.9), '-': () => zoomBy(1.1),
+      ' ': () => togglePlay(),
+      o: () => { overlay.hidden = !overlay.hidden; },
+      r: () => { if (state.welcome) { state.camera = orbitFrom(state.welcome.camera); changeCamera(() => {}); } },
+    };
+    const action = keys[e.key];
+    if (action) { e.preventDefault(); action(); }
+  });
+
+  // ---- animation and settings controls ----
+  function animation(fields) { send({ animation: { ...fields, ...nextInput() } }); }
+  function togglePlay() {
+    state.playing = !state.playing;
+    animation({ action: state.playing ? 'PLAY' : 'PAUSE' });
+    $('play').textContent = state.playing ? 'Pause' : 'Play';
+  }
+  $('play').addEventListener('click', togglePlay);
+  let scrubbing = false;
+  $('scrub').addEventListener('input', () => { scrubbing = true; animation({ action: 'SEEK', timeMs: Number($('scrub').value) }); });
+  $('scrub').addEventListener('change', () => { scrubbing = false; });
+  $('speed').addEventListener('change', () => animation({ speed: Number($('speed').value) }));
+
+  function sendSettings() {
+    const level = Number($('level').value);
+    const threshold = Number($('threshold').value);
+    if (!(threshold > 0)) { showStatus('threshold must be a positive number'); return; }
+    send({ settings: {
+      method: $('method').value, tessellation: $('tessellation').value, metric: $('metric').value,
+      threshold, level: level === 0 ? -1 : level,
+      jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value), ...nextInput(),
+    } });
+  }
+  for (const id of ['method', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
+    $(id).addEventListener('change', sendSettings);
+
+  function showSettings(settings) {
+    const set = (id, value) => { if (value !== undefined && value !== null) $(id).value = value; };
+    set('method', settings.method);
+    set('tessellation', settings.tessellation);
+    set('metric', settings.metric);
+    set('threshold', settings.threshold);
+    set('level', settings.level === -1 ? 0 : settings.level);
+    set('quality', settings.jpegQuality);
+    set('scale', String(settings.resolutionScale));
+  }
+
+  // ---- viewport ----
+  function viewportSize() {
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.round(Math.max(1, canvas.clientWidth) * ratio);
+    const height = Math.round(Math.max(1, canvas.clientHeight) * ratio);
+    return [Math.min(width, state.limits.max_width), Math.min(height, state.limits.max_height)];
+  }
+  let resizeTimer = 0;
+  new ResizeObserver(() => {
+    clearTimeout(resizeTimer);
+    resizeTimer = setTimeout(() => {
+      const [width, height] = viewportSize();
+      if (width === canvas.width && height === canvas.height) return;
+      canvas.width = width;
+      canvas.height = height;
+      redraw();  // resizing clears the canvas: show the last frame stretched until the new one comes
+      send({ resize: { width, height, ...nextInput() } });
+    }, 100);
+  }).observe(canvas);
+
+  // ---- server messages ----
+  function onWelcome(welcome) {
+    state.welcome = welcome;
+    state.reconnectDelayMs = 500;
+    state.limits = { max_width: welcome.limits.maxWidth, max_height: welcome.limits.maxHeight };
+    state.resumeToken = welcome.resumeToken;
+    sessionStorage.setItem('specula.resume', welcome.resumeToken);
+    state.playing = welcome.playing;
+    $('play').textContent = state.playing ? 'Pause' : 'Play';
+    showSettings(welcome.settings);
+    if (!state.camera) state.camera = orbitFrom(welcome.camera);
+    [canvas.width, canvas.height] = viewportSize();
+    redraw();
+    showStatus(welcome.resumed ? 'Reconnected: camera, animation and settings restored.' : '', 'info');
+    if (welcome.resumed) setTimeout(() => showStatus(''), 2000);
+    else applyLinkParameters();
+  }
+
+  // ?eye=x,y,z&target=x,y,z&up=x,y,z&fov=deg&time=ms&paused=1 opens a given view (shareable links, tests).
+  function applyLinkParameters() {
+    const vector = (name) => params.get(name)?.split(',').map(Number);
+    if (params.has('eye')) {
+      const camera = { eye: toProto(vector('eye')), target: toProto(vector('target') || [0, 0, 0]),
+                       fovDegrees: Number(params.get('fov')) || state.camera.fov };
+      state.camera = orbitFrom(camera);
+      if (params.has('up')) state.camera.up = vector('up');
+      changeCamera(() => {});
+    }
+    if (params.has('paused')) { state.playing = false; animation({ action: 'PAUSE' }); $('play').textContent = 'Play'; }
+    if (params.has('time')) animation({ action: 'SEEK', timeMs: Number(params.get('time')) });
+  }
+
+  function onFrame(frame) {
+    if (state.decoding) { state.pendingFrame = frame; return; }  // latest wins while one decodes
+    state.decoding = true;
+    const bytes = Uint8Array.from(atob(frame.jpeg), (c) => c.charCodeAt(0));
+    createImageBitmap(new Blob([bytes], { type: 'image/jpeg' }))
+      .then((bitmap) => {
+        state.bitmap?.close();
+        state.bitmap = bitmap;
+        redraw();
+        frameDrawn(frame, bytes.length);
+      })
+      .catch((e) => showStatus(`a frame could not be decoded: ${e}`))
+      .finally(() => {
+        state.decoding = false;
+        const next = state.pendingFrame;
+        state.pendingFrame = null;
+        if (next) onFrame(next);
+      });
+  }
+
+  function redraw() {
+    if (state.bitmap) context2d.drawImage(state.bitmap, 0, 0, canvas.width, canvas.height);
+  }
+
+  function frameDrawn(frame, jpegBytes) {
+    const now = performance.now();
+    const sequence = Number(frame.inputSequence);
+    if (state.sentAt.has(sequence)) {
+      state.latencyMs = now - state.sentAt.get(sequence);
+      state.sentAt.delete(sequence);
+    }
+    if (!state.cameraOwned && frame.camera) state.camera = orbitFrom(frame.camera);  // follow the scene's camera
+    state.frameTimes.push(now);
+    while (state.frameTimes.length && now - state.frameTimes[0] > 1000) state.frameTimes.shift();
+    const { jpeg, ...described } = frame;
+    state.frame = { ...described, jpegBytes };
+    state.framesDrawn++;
+    if (!scrubbing) $('scrub').value = String(frame.sceneTimeMs % Number($('scrub').max));
+    $('time').textContent = `${(frame.sceneTimeMs / 1000).toFixed(2)} s`;
+    updateOverlay();
+  }
+
+  function updateOverlay() {
+    const f = state.frame;
+    if (!f) return;
+    const ms = (v) => Number(v || 0).toFixed(1);
+    const stages = (f.stages || []).map((s) => `${s.name} ${ms(s.ms)}`).join(' · ');
+    const search = f.search || {};
+    const tessellation = f.tessellation || {};
+    const lines = [
+      `${f.width}×${f.height} ${f.still ? 'still' : 'interactive'} · frame ${f.number} · ${state.frameTimes.length} fps`,
+      `input → frame ${state.latencyMs === null ? '–' : `${state.latencyMs.toFixed(0)} ms`}`,
+      `server: render ${ms(f.renderMs)} ms · encode ${ms(f.encodeMs)} ms · input→sent ${ms(f.serverMs)} ms`,
+      `passes (GPU ms): ${stages}`,
+      `search: ${search.mirrors || 0} mirrors · ${search.searched || 0} vertices · ${Number(search.meanSteps || 0).toFixed(2)} steps (max ${search.maxSteps || 0}) · ${search.unsolved || 0} unsolved`,
+      tessellation.inputTriangles
+        ? `tessellation: ${tessellation.inputTriangles} → ${tessellation.finishedTriangles} triangles · ${tessellation.midpointSearches} midpoint searches${tessellation.capped ? ' · CAPPED' : ''}`
+        : 'tessellation: off or nothing to split',
+      `${(f.jpegBytes / 1024).toFixed(1)} KB · ${f.skippedFrames || 0} skipped · scene ${(f.sceneTimeMs / 1000).toFixed(2)} s`,
+    ];
+    overlay.textContent = lines.join('\n');
+  }
+
+  if (!('WebSocket' in window) || !('createImageBitmap' in window)) {
+    showStatus('This browser lacks WebSocket or createImageBitmap; use a current Chrome, Firefox or Safari.');
+  } else {
+    connect();
+  }
+})();

@@ -1,0 +1,211 @@
+// The browser client in real headless Chromium against a real `specula serve`, driven over the Chrome
+// DevTools Protocol (no npm packages: Node's WebSocket, run with --experimental-websocket).
+//   node --experimental-websocket browser_test.mjs PATH/TO/specula [SCREENSHOT-DIR]
+// Checks: the page shows the mirror scene (its canvas screenshot against `specula render` of the same
+// camera and time, PSNR bound below), the overlay shows statistics, a scripted drag changes the view,
+// and a blank or stale canvas fails.
+import { spawn, spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { inflateSync } from 'node:zlib';
+
+const specula = process.argv[2];
+const keepDir = process.argv[3];
+const work = mkdtempSync(join(tmpdir(), 'specula-browser-'));
+const kMinPsnr = 30;          // dB: the page's JPEG (quality 85) against the lossless render
+const kMinChangeAfterDrag = 4; // mean absolute difference in grey levels between views before and after the drag
+let failures = 0;
+const check = (description, ok, detail = '') => {
+  console.log(`${ok ? 'ok' : 'FAIL'} - ${description}${detail ? `: ${detail}` : ''}`);
+  if (!ok) failures++;
+};
+
+// Starts a process and resolves with it once `pattern` appears in its output.
+function startAndWaitFor(command, args, pattern, timeoutMs) {
+  return new Promise((resolve, reject) => {
+    const child = spawn(command, args, { stdio: ['ignore', 'pipe', 'pipe'] });
+    let output = '';
+    const timer = setTimeout(() => reject(new Error(`${command} did not print ${pattern} in ${timeoutMs} ms:\n${output}`)), timeoutMs);
+    const onData = (data) => {
+      output += data;
+      const match = output.match(pattern);
+      if (match) { clearTimeout(timer); resolve({ child, match }); }
+    };
+    child.stdout.on('data', onData);
+    child.stderr.on('data', onData);
+    child.on('exit', (code) => { clearTimeout(timer); reject(new Error(`${command} exited ${code}:\n${output}`)); });
+  });
+}
+
+// A minimal CDP client over the browser's WebSocket, with flattened target sessions.
+class Cdp {
+  constructor(url) {
+    this.socket = new WebSocket(url);
+    this.nextId = 1;
+    this.waiting = new Map();
+    this.socket.onmessage = (event) => {
+      const message = JSON.parse(event.data);
+      const waiter = this.waiting.get(message.id);
+      if (!waiter) return;
+      this.waiting.delete(message.id);
+      if (message.error) waiter.reject(new Error(JSON.stringify(message.error)));
+      else waiter.resolve(message.result);
+    };
+    this.opened = new Promise((resolve, reject) => { this.socket.onopen = resolve; this.socket.onerror = reject; });
+  }
+  send(method, params = {}, sessionId = undefined) {
+    const id = this.nextId++;
+    this.socket.send(JSON.stringify({ id, method, params, sessionId }));
+    return new Promise((resolve, reject) => this.waiting.set(id, { resolve, reject }));
+  }
+}
+
+// PNG (8-bit RGB or RGBA, not interlaced) → { width, height, rgba }.
+function decodePng(bytes) {
+  let offset = 8, width = 0, height = 0, colourType = 0;
+  const data = [];
+  while (offset < bytes.length) {
+    const length = bytes.readUInt32BE(offset);
+    const type = bytes.toString('ascii', offset + 4, offset + 8);
+    const body = bytes.subarray(offset + 8, offset + 8 + length);
+    if (type === 'IHDR') {
+      width = body.readUInt32BE(0); height = body.readUInt32BE(4); colourType = body[9];
+      if (body[8] !== 8 || body[12] !== 0 || (colourType !== 2 && colourType !== 6)) throw new Error('unsupported PNG');
+    } else if (type === 'IDAT') data.push(body);
+    offset += 12 + length;
+  }
+  const channels = colourType === 6 ? 4 : 3;
+  const raw = inflateSync(Buffer.concat(data));
+  const stride = width * channels;
+  const out = new Uint8Array(width * height * 4);
+  let previous = new Uint8Array(stride);
+  for (let y = 0; y < height; y++) {
+    const filter = raw[y * (stride + 1)];
+    const line = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    const current = new Uint8Array(stride);
+    for (let i = 0; i < stride; i++) {
+      const a = i >= channels ? current[i - channels] : 0, b = previous[i], c = i >= channels ? previous[i - channels] : 0;
+      const p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
+      const predictor = [0, a, b, (a + b) >> 1, pa <= pb && pa <= pc ? a : pb <= pc ? b : c][filter];
+      current[i] = (line[i] + predictor) & 255;
+    }
+    for (let x = 0; x < width; x++)
+      for (let k = 0; k < 4; k++) out[(y * width + x) * 4 + k] = k < channels ? current[x * channels + k] : 255;
+    previous = current;
+  }
+  return { width, height, rgba: out };
+}
+
+const grey = (img, i) => 0.299 * img.rgba[i * 4] + 0.587 * img.rgba[i * 4 + 1] + 0.114 * img.rgba[i * 4 + 2];
+function psnr(a, b) {
+  let sum = 0;
+  for (let i = 0; i < a.width * a.height; i++)
+    for (let k = 0; k < 3; k++) sum += (a.rgba[i * 4 + k] - b.rgba[i * 4 + k]) ** 2;
+  const mse = sum / (a.width * a.height * 3);
+  return mse === 0 ? Infinity : 10 * Math.log10((255 * 255) / mse);
+}
+function meanAbsoluteGreyDifference(a, b) {
+  let sum = 0;
+  for (let i = 0; i < a.width * a.height; i++) sum += Math.abs(grey(a, i) - grey(b, i));
+  return sum / (a.width * a.height);
+}
+function greyDeviation(a) {
+  let sum = 0, squares = 0;
+  const n = a.width * a.height;
+  for (let i = 0; i < n; i++) { const g = grey(a, i); sum += g; squares += g * g; }
+  return Math.sqrt(Math.max(0, squares / n - (sum / n) ** 2));
+}
+
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+let server, browser;
+try {
+  ({ child: server } = await startAndWaitFor(specula, ['serve', '--port', '0', '--scene', 'checker-sphere'],
+    /listening on 127\.0\.0\.1:(\d+)/, 120000).then((r) => { r.port = Number(r.match[1]); return r; }).then((r) => {
+    globalThis.serverPort = r.port; return r;
+  }));
+  const port = globalThis.serverPort;
+  const started = await startAndWaitFor('chromium', ['--headless=new', '--no-sandbox', '--disable-gpu', '--no-first-run',
+    '--remote-debugging-port=0', `--user-data-dir=${join(work, 'profile')}`, '--window-size=1000,600', 'about:blank'],
+    /DevTools listening on (ws:\/\/\S+)/, 60000);
+  browser = started.child;
+  const cdp = new Cdp(started.match[1]);
+  await cdp.opened;
+  const { targetId } = await cdp.send('Target.createTarget', { url: 'about:blank' });
+  const { sessionId } = await cdp.send('Target.attachToTarget', { targetId, flatten: true });
+  const page = (method, params) => cdp.send(method, params, sessionId);
+  const evaluate = async (expression) => (await page('Runtime.evaluate', { expression, returnByValue: true })).result.value;
+  await page('Page.enable');
+  await page('Emulation.setDeviceMetricsOverride', { width: 1000, height: 600, deviceScaleFactor: 1, mobile: false });
+
+  // Waits until the page has drawn a full-quality still frame satisfying `accept`; returns it.
+  async function stillFrame(accept, timeoutMs = 60000) {
+    const deadline = Date.now() + timeoutMs;
+    while (Date.now() < deadline) {
+      const frame = await evaluate(`(() => { const s = window.specula, c = document.getElementById('frame');
+        return s && s.frame && !s.decoding && s.frame.width === c.width && s.frame.height === c.height ? s.frame : null; })()`);
+      if (frame && frame.still && accept(frame)) return frame;
+      await sleep(100);
+    }
+    throw new Error(`no matching still frame within ${timeoutMs} ms; status: ${await evaluate("document.getElementById('status').textContent")}`);
+  }
+  async function screenshot(name) {
+    const rect = await evaluate("(() => { const r = document.getElementById('frame').getBoundingClientRect(); return { x: r.x, y: r.y, width: r.width, height: r.height }; })()");
+    const { data } = await page('Page.captureScreenshot', { format: 'png', clip: { ...rect, scale: 1 } });
+    const bytes = Buffer.from(data, 'base64');
+    writeFileSync(join(keepDir || work, name), bytes);
+    return decodePng(bytes);
+  }
+
+  const eye = '2.5,1.6,4.2', target = '0,0.6,0', fov = 45, timeMs = 3000;
+  await page('Page.navigate', { url: `http://127.0.0.1:${port}/?eye=${eye}&target=${target}&fov=${fov}&time=${timeMs}&paused=1` });
+  const first = await stillFrame((f) => f.sceneTimeMs === timeMs && Math.abs(f.camera.eye.x - 2.5) < 1e-3);
+  const canvasSize = await evaluate("[document.getElementById('frame').width, document.getElementById('frame').height]");
+  check('the frame fills the canvas one to one', first.width === canvasSize[0] && first.height === canvasSize[1], `${first.width}x${first.height} vs ${canvasSize}`);
+  const overlay = await evaluate("document.getElementById('overlay').textContent");
+  check('the overlay shows fps, latency, server timings and search statistics',
+    /fps/.test(overlay) && /input → frame/.test(overlay) && /render [\d.]+ ms/.test(overlay) && /search: 1 mirrors/.test(overlay), overlay);
+  const pressKey = async (key) => {
+    await page('Input.dispatchKeyEvent', { type: 'keyDown', key, text: key });
+    await page('Input.dispatchKeyEvent', { type: 'keyUp', key });
+  };
+  await pressKey('o');  // hide the statistics overlay: compare the frame alone
+  check('the O key hides the overlay', await evaluate("document.getElementById('overlay').hidden") === true);
+  const shot = await screenshot('browser-view.png');
+  check('the canvas is not blank', greyDeviation(shot) > 10, `grey deviation ${greyDeviation(shot).toFixed(1)}`);
+
+  const reference = join(work, 'reference.png');
+  const render = spawnSync(specula, ['render', '--scene', 'checker-sphere', '--size', `${first.width}x${first.height}`,
+    '--eye', eye, '--target', target, '--up', '0,1,0', '--fov', String(fov), '--time', String(timeMs / 1000), '--out', reference]);
+  check('specula render renders the same view', render.status === 0, render.stderr?.toString());
+  const expected = decodePng(readFileSync(reference));
+  const similarity = psnr(shot, expected);
+  check(`the screenshot matches specula render of that camera (PSNR >= ${kMinPsnr} dB)`, similarity >= kMinPsnr, `${similarity.toFixed(1)} dB`);
+
+  // A scripted drag across the canvas orbits the camera; the canvas must show the new view.
+  const rect = await evaluate("(() => { const r = document.getElementById('frame').getBoundingClientRect(); return { x: r.x + r.width / 2, y: r.y + r.height / 2 }; })()");
+  await page('Input.dispatchMouseEvent', { type: 'mousePressed', x: rect.x, y: rect.y, button: 'left', clickCount: 1 });
+  for (let step = 1; step <= 10; step++) {
+    await page('Input.dispatchMouseEvent', { type: 'mouseMoved', x: rect.x + 15 * step, y: rect.y + 3 * step, button: 'left', buttons: 1 });
+    await sleep(30);
+  }
+  await page('Input.dispatchMouseEvent', { type: 'mouseReleased', x: rect.x + 150, y: rect.y + 30, button: 'left', clickCount: 1 });
+  const moved = await stillFrame((f) => Number(f.number) > Number(first.number) && Math.abs(f.camera.eye.x - 2.5) > 0.1);
+  const after = await screenshot('browser-after-drag.png');
+  const change = meanAbsoluteGreyDifference(shot, after);
+  check('a drag changes the view (the canvas is not stale)', change >= kMinChangeAfterDrag, `mean grey change ${change.toFixed(1)}, eye.x ${moved.camera.eye.x.toFixed(2)}`);
+  const latency = await evaluate('window.specula.latencyMs');
+  check('input-to-frame latency is measured', typeof latency === 'number' && latency > 0, String(latency));
+} catch (error) {
+  check('browser test ran', false, error.stack || String(error));
+} finally {
+  const exited = (child) => child && child.exitCode === null ? new Promise((resolve) => child.on('exit', resolve)) : null;
+  const gone = [exited(browser), exited(server)];
+  browser?.kill('SIGKILL');
+  server?.kill('SIGTERM');
+  await Promise.all(gone);
+  rmSync(work, { recursive: true, force: true });
+}
+console.log(failures === 0 ? 'all browser checks passed' : `${failures} browser checks failed`);
+process.exit(failures === 0 ? 0 : 1);

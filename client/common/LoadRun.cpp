@@ -1,9 +1,10 @@
 #include "LoadRun.h"
 
+#include "OrbitCamera.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <glm/glm.hpp>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -15,42 +16,15 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Orbit {
-  glm::vec3 target{0.0f}, up{0.0f, 1.0f, 0.0f};
-  float radius = 5.0f, height = 1.0f, fov = 45.0f, phase = 0.0f;
-};
-
-v1::ClientMessage cameraOnOrbit(const Orbit& orbit, double degrees, std::uint64_t sequence) {
-  const double radians = (orbit.phase + degrees) * 3.14159265358979 / 180.0;
-  v1::ClientMessage message;
-  v1::CameraUpdate& camera = *message.mutable_camera();
-  camera.mutable_eye()->set_x(orbit.target.x + orbit.radius * static_cast<float>(std::sin(radians)));
-  camera.mutable_eye()->set_y(orbit.target.y + orbit.height);
-  camera.mutable_eye()->set_z(orbit.target.z + orbit.radius * static_cast<float>(std::cos(radians)));
-  camera.mutable_target()->set_x(orbit.target.x);
-  camera.mutable_target()->set_y(orbit.target.y);
-  camera.mutable_target()->set_z(orbit.target.z);
-  camera.mutable_up()->set_x(orbit.up.x);
-  camera.mutable_up()->set_y(orbit.up.y);
-  camera.mutable_up()->set_z(orbit.up.z);
-  camera.set_fov_degrees(orbit.fov);
-  camera.set_sequence(sequence);
-  camera.set_client_time_ms(steadyMilliseconds());
-  return message;
-}
-
-// The scene's default camera as an orbit around its target, phase-shifted per session.
-Orbit orbitFrom(const v1::SceneInfo& scene, int session, int sessions) {
-  Orbit orbit;
-  const glm::vec3 eye(scene.eye().x(), scene.eye().y(), scene.eye().z());
-  orbit.target = {scene.target().x(), scene.target().y(), scene.target().z()};
-  orbit.up = {scene.up().x(), scene.up().y(), scene.up().z()};
-  const glm::vec3 offset = eye - orbit.target;
-  orbit.height = offset.y;
-  orbit.radius = std::max(0.1f, std::hypot(offset.x, offset.z));
-  orbit.fov = scene.fov_degrees() > 0.0f ? scene.fov_degrees() : 45.0f;
-  orbit.phase = static_cast<float>(std::atan2(offset.x, offset.z) * 180.0 / 3.14159265358979) +
-                360.0f * static_cast<float>(session) / static_cast<float>(std::max(1, sessions));
+// The scene's default camera as an orbit, phase-shifted so sessions look from different sides.
+OrbitCamera orbitFor(const v1::SceneInfo& scene, int session, int sessions) {
+  v1::CameraUpdate camera;
+  *camera.mutable_eye() = scene.eye();
+  *camera.mutable_target() = scene.target();
+  *camera.mutable_up() = scene.up();
+  camera.set_fov_degrees(scene.fov_degrees());
+  OrbitCamera orbit = OrbitCamera::from(camera);
+  orbit.orbit(6.2831853f * static_cast<float>(session) / static_cast<float>(std::max(1, sessions)), 0.0f);
   return orbit;
 }
 
@@ -71,23 +45,25 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
     result.error = sent.error();
     return result;
   }
-  std::optional<Orbit> orbit;
+  std::optional<OrbitCamera> start;  // the session's orbit at time 0, once the welcome names the scene
   const auto inputInterval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.inputHz));
   Clock::time_point nextInput = Clock::now();
-  const Clock::time_point start = Clock::now();
+  const Clock::time_point began = Clock::now();
   std::uint64_t sequence = 0;
   double renderSum = 0.0, encodeSum = 0.0, serverSum = 0.0;
   while (Clock::now() < end) {
-    if (orbit && Clock::now() >= nextInput) {
-      const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      if (Status sent = client.send(cameraOnOrbit(*orbit, seconds * options.orbitDegreesPerSecond, ++sequence)); !sent) {
+    if (start && Clock::now() >= nextInput) {
+      const double seconds = std::chrono::duration<double>(Clock::now() - began).count();
+      OrbitCamera orbit = *start;
+      orbit.orbit(static_cast<float>(seconds * options.orbitDegreesPerSecond * 3.14159265358979 / 180.0), 0.0f);
+      if (Status sent = client.send(orbit.message(++sequence, steadyMilliseconds())); !sent) {
         result.error = sent.error();
         break;
       }
       nextInput += inputInterval;
     }
     const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(
-        std::min(end, orbit ? nextInput : end) - Clock::now());
+        std::min(end, start ? nextInput : end) - Clock::now());
     auto message = client.receive(std::max(std::chrono::milliseconds(1), wait));
     if (!message) {
       if (client.closeInfo()) {
@@ -97,7 +73,7 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
       }
       continue;  // timed out: time for the next input
     }
-    if (message->has_welcome()) orbit = orbitFrom(message->welcome().scene(), index, options.sessions);
+    if (message->has_welcome()) start = orbitFor(message->welcome().scene(), index, options.sessions);
     if (message->has_error()) {
       result.error = "server error: " + message->error().message();
       break;

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/OutputFiles.h"

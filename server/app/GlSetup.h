@@ -2,7 +2,7 @@
 #include <memory>
 #include <string>
 
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 #include "base/Result.h"
 #include "gl/GlContext.h"
 

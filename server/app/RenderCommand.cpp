@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"

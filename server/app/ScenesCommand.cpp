@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "scene/builtin/BuiltinScenes.h"
 

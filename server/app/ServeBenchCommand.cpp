@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "LoadRun.h"
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/OutputFiles.h"

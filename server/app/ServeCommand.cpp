@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"

@@ -1,11 +1,11 @@
-#include "app/CommandLine.h"
+#include "base/CommandLine.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <sstream>
 
-namespace specula::app {
+namespace specula {
 
 namespace {
 
@@ -162,4 +162,4 @@ Result<std::vector<std::pair<int, int>>> CommandLine::sizeList(const std::string
                                         [&](const std::string& item) { return parseSize(name, item, maxSide); });
 }
 
-}  // namespace specula::app
+}  // namespace specula

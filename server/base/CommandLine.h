@@ -10,7 +10,7 @@
 
 #include "base/Result.h"
 
-namespace specula::app {
+namespace specula {
 
 struct OptionSpec {
   std::string name;       // without dashes: "size"
@@ -50,4 +50,4 @@ class CommandLine {
   bool helpRequested_ = false;
 };
 
-}  // namespace specula::app
+}  // namespace specula

@@ -359,6 +359,44 @@ TEST(StreamingServerLimits, ShutdownClosesEveryClientWithGoingAwayWithinASecond)
   EXPECT_LT(std::chrono::steady_clock::now() - start, 1s);
 }
 
+// A raw TCP connection that sends `bytes` (maybe nothing) and then only listens; returns whether the
+// server closed it within `within`.
+bool serverHangsUpOn(std::uint16_t port, const std::string& bytes, std::chrono::milliseconds within) {
+  boost::asio::io_context io;
+  boost::asio::ip::tcp::socket socket(io);
+  boost::system::error_code error;
+  socket.connect({boost::asio::ip::make_address("127.0.0.1"), port}, error);
+  if (error) return false;
+  if (!bytes.empty()) boost::asio::write(socket, boost::asio::buffer(bytes), error);
+  bool closed = false;
+  char sink[4096];
+  std::function<void()> readMore = [&] {
+    socket.async_read_some(boost::asio::buffer(sink), [&](boost::system::error_code e, std::size_t) {
+      if (e) closed = true;
+      else readMore();
+    });
+  };
+  readMore();
+  io.run_for(within);
+  return closed;
+}
+
+TEST(StreamingServerLimits, ConnectionsThatNeverFinishTheirRequestAreDroppedAtTheHandshakeDeadline) {
+  RigOptions options = defaultRigOptions();
+  options.server.handshakeTimeout = 300ms;
+  ServerRig rig(options);
+  EXPECT_TRUE(serverHangsUpOn(rig.port(), "", 2s)) << "silent connection";
+  EXPECT_TRUE(serverHangsUpOn(rig.port(), "GET / HTTP/1.1\r\nHost: x\r\n", 2s)) << "half a request (slowloris)";
+  EXPECT_TRUE(serverHangsUpOn(rig.port(), std::string(20000, 'A'), 2s)) << "an endless header line";
+  EXPECT_TRUE(serverHangsUpOn(rig.port(), std::string("\x16\x03\x01\x02\x00\x01\x00\x01\xfc\x03\x03", 11), 2s))
+      << "a TLS hello on the plain port";
+  for (int i = 0; i < 100 && rig.server().openConnections() > 0; ++i) std::this_thread::sleep_for(10ms);
+  EXPECT_EQ(rig.server().openConnections(), 0u);
+  auto client = rig.connect();
+  ASSERT_TRUE(client);
+  EXPECT_FALSE(greet(*client).session_id().empty()) << "the server still serves";
+}
+
 TEST(StreamingServerSecurity, ANonLoopbackBindNeedsAToken) {
   RigOptions options = defaultRigOptions();
   options.server.bindAddress = "0.0.0.0";

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "ConnectionOptions.h"
 #include "LoadRun.h"
 #include "base/CommandLine.h"
 
@@ -18,49 +19,48 @@ int fail(const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace specula;
+  std::vector<OptionSpec> specs = client::connectionOptions();
+  for (OptionSpec spec : std::initializer_list<OptionSpec>{
+           {"sessions", "N", "concurrent sessions", "4"},
+           {"seconds", "S", "measured seconds", "10"},
+           {"warmup", "S", "seconds before measuring", "1"},
+           {"size", "WxH", "viewport of every session", "640x360"},
+           {"input-hz", "HZ", "camera updates per second per session", "60"},
+           {"json", "FILE|-", "also write the report as JSON (- for stdout)", ""},
+       })
+    specs.push_back(spec);
   CommandLine options(
       "specula-load [--url ws://HOST:PORT] [--sessions N] [--seconds S] [--size WxH] [--json FILE|-]",
       "Opens N sessions at once, each orbiting the scene on its own camera path and sending camera updates at\n"
       "--input-hz, for --seconds after a --warmup. Prints per-session and aggregate frames per second,\n"
       "input-to-frame latency percentiles (update sent → frame reflecting it received), skipped frames,\n"
       "errors and bytes; --json writes the same for automation. Exits 1 if any session failed.",
-      {
-          {"url", "URL", "server address; ?token=SECRET when the server needs one", "ws://127.0.0.1:8080"},
-          {"sessions", "N", "concurrent sessions", "4"},
-          {"seconds", "S", "measured seconds", "10"},
-          {"warmup", "S", "seconds before measuring", "1"},
-          {"size", "WxH", "viewport of every session", "640x360"},
-          {"input-hz", "HZ", "camera updates per second per session", "60"},
-          {"encoding", "proto|json", "WebSocket subprotocol", "proto"},
-          {"json", "FILE|-", "also write the report as JSON (- for stdout)", ""},
-      });
+      std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   if (Status status = options.parse(arguments); !status) return fail(status.error());
   if (options.helpRequested()) {
     std::cout << options.help();
     return 0;
   }
-  auto address = client::parseServerUrl(options.text("url"));
+  auto connection = client::parseConnectionOptions(options);
   auto sessions = options.integer("sessions", 1, 1024);
   auto seconds = options.number("seconds");
   auto warmup = options.number("warmup");
   auto size = options.size("size", 8192);
   auto inputHz = options.number("input-hz");
-  if (!address) return fail(address.error());
+  if (!connection) return fail(connection.error());
   if (!sessions) return fail(sessions.error());
   if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) return fail("--seconds expects a number in (0, 86400]");
   if (!warmup || *warmup < 0.0 || *warmup > 3600.0) return fail("--warmup expects a number in [0, 3600]");
   if (!size) return fail(size.error());
   if (!inputHz || *inputHz <= 0.0 || *inputHz > 1000.0) return fail("--input-hz expects a number in (0, 1000]");
-  const std::string encoding = options.text("encoding");
-  if (encoding != "proto" && encoding != "json") return fail("--encoding expects proto or json, got '" + encoding + "'");
 
   // Fail fast and clearly when nobody is there, before starting N threads.
-  if (auto probe = client::SpeculaClient::connect(*address, net::Encoding::Proto); !probe) return fail(probe.error());
+  if (auto probe = client::SpeculaClient::connect(connection->address, connection->encoding); !probe) return fail(probe.error());
 
   client::LoadOptions load;
-  load.address = *address;
-  load.encoding = encoding == "json" ? net::Encoding::Json : net::Encoding::Proto;
+  load.address = connection->address;
+  load.encoding = connection->encoding;
   load.sessions = *sessions;
   std::tie(load.width, load.height) = *size;
   load.duration = std::chrono::milliseconds(static_cast<long>(*seconds * 1000.0));
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "\n");
 
   std::printf("%d sessions, %dx%d, %s, %.0f s measured (after %.0f s warm-up)\n", *sessions, load.width, load.height,
-              encoding.c_str(), *seconds, *warmup);
+              options.text("encoding").c_str(), *seconds, *warmup);
   std::printf("session   fps  latency p50  p99 ms  render ms  encode ms  KB/frame  skipped  error\n");
   for (std::size_t i = 0; i < report.sessions.size(); ++i) {
     const client::SessionLoad& s = report.sessions[i];

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "CameraPath.h"
+#include "ConnectionOptions.h"
 #include "LoadRun.h"
 #include "SpeculaClient.h"
 #include "base/CommandLine.h"
@@ -61,6 +62,17 @@ std::string csvRow(std::size_t sample, double pathTime, const v1::Frame& frame, 
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::vector<OptionSpec> specs = {{"path", "FILE", "camera path, .json or .csv (see client/tools/CameraPath.h for the format)", ""}};
+  for (OptionSpec& spec : client::connectionOptions()) specs.push_back(std::move(spec));
+  for (OptionSpec spec : std::initializer_list<OptionSpec>{
+           {"pace", "frames|realtime", "wait for each sample's frame, or follow the path's clock", "frames"},
+           {"fps", "N", "samples per path second", "30"},
+           {"size", "WxH", "viewport", "640x360"},
+           {"csv", "FILE", "per-frame CSV", "path.csv"},
+           {"frames-dir", "DIR", "write frame_00001.jpg ... here", ""},
+           {"timeout", "S", "longest wait for one frame before giving up", "30"},
+       })
+    specs.push_back(spec);
   CommandLine options(
       "specula-path --path FILE.json|FILE.csv [--url ws://HOST:PORT] [--pace frames|realtime] [--fps N] "
       "[--size WxH] [--csv FILE] [--frames-dir DIR]",
@@ -69,17 +81,7 @@ int main(int argc, char** argv) {
       "frame for the previous one arrived (every sample gets its frame); --pace realtime sends samples on the\n"
       "path's clock and records whatever frames come (latest wins). Writes one CSV row per frame: latency,\n"
       "server timings, search and tessellation statistics; --frames-dir also keeps every JPEG.",
-      {
-          {"path", "FILE", "camera path, .json or .csv (see client/tools/CameraPath.h for the format)", ""},
-          {"url", "URL", "server address; ?token=SECRET when the server needs one", "ws://127.0.0.1:8080"},
-          {"pace", "frames|realtime", "wait for each sample's frame, or follow the path's clock", "frames"},
-          {"fps", "N", "samples per path second", "30"},
-          {"size", "WxH", "viewport", "640x360"},
-          {"csv", "FILE", "per-frame CSV", "path.csv"},
-          {"frames-dir", "DIR", "write frame_00001.jpg ... here", ""},
-          {"encoding", "proto|json", "WebSocket subprotocol", "proto"},
-          {"timeout", "S", "longest wait for one frame before giving up", "30"},
-      });
+      std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   if (Status status = options.parse(arguments); !status) return fail(status.error());
   if (options.helpRequested()) {
@@ -88,18 +90,17 @@ int main(int argc, char** argv) {
   }
   if (!options.has("path")) return fail("--path FILE is required (a .json or .csv camera path)");
   auto path = client::loadCameraPath(options.text("path"));
-  auto address = client::parseServerUrl(options.text("url"));
+  auto connection = client::parseConnectionOptions(options);
   auto fps = options.number("fps");
   auto size = options.size("size", 8192);
   auto timeout = options.number("timeout");
-  const std::string pace = options.text("pace"), encoding = options.text("encoding");
+  const std::string pace = options.text("pace");
   if (!path) return fail(path.error());
-  if (!address) return fail(address.error());
+  if (!connection) return fail(connection.error());
   if (!fps || *fps <= 0.0 || *fps > 1000.0) return fail("--fps expects a number in (0, 1000]");
   if (!size) return fail(size.error());
   if (!timeout || *timeout <= 0.0) return fail("--timeout expects a positive number of seconds");
   if (pace != "frames" && pace != "realtime") return fail("--pace expects frames or realtime, got '" + pace + "'");
-  if (encoding != "proto" && encoding != "json") return fail("--encoding expects proto or json, got '" + encoding + "'");
   const std::string framesDir = options.text("frames-dir");
   if (!framesDir.empty()) {
     std::error_code error;
@@ -111,7 +112,7 @@ int main(int argc, char** argv) {
   csv << "sample,path_time_s,input_sequence,frame,latency_ms,render_ms,encode_ms,server_ms,bytes,still,width,height,"
          "scene_time_ms,mirrors,searched,mean_steps,unsolved,tess_input,tess_finished,midpoint_searches,stages\n";
 
-  auto connected = client::SpeculaClient::connect(*address, encoding == "json" ? net::Encoding::Json : net::Encoding::Proto);
+  auto connected = client::SpeculaClient::connect(connection->address, connection->encoding);
   if (!connected) return fail(connected.error());
   client::SpeculaClient& client = **connected;
   v1::ClientMessage hello;

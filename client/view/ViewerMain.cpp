@@ -13,6 +13,7 @@
 #include <optional>
 #include <thread>
 
+#include "ConnectionOptions.h"
 #include "LoadRun.h"
 #include "OrbitCamera.h"
 #include "SpeculaClient.h"
@@ -99,36 +100,35 @@ Viewer* viewerOf(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindow
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::vector<OptionSpec> specs = client::connectionOptions();
+  for (OptionSpec spec : std::initializer_list<OptionSpec>{
+           {"size", "WxH", "window size", "960x540"},
+           {"frames", "N", "exit after drawing N frames (0: never)", "0"},
+           {"seconds", "S", "exit after S seconds (0: never)", "0"},
+       })
+    specs.push_back(spec);
   CommandLine options(
       "specula-view [--url ws://HOST:PORT] [--size WxH] [--frames N] [--seconds S]",
       "Opens a window on a Specula server's stream. Drag: orbit; right-drag or shift-drag: pan; wheel: zoom;\n"
       "arrows: orbit; +/-: zoom; space: play/pause; Esc: quit. Statistics are in the window title and printed\n"
       "once a second. --frames or --seconds end the run (scripts, tests).",
-      {
-          {"url", "URL", "server address; ?token=SECRET when the server needs one", "ws://127.0.0.1:8080"},
-          {"size", "WxH", "window size", "960x540"},
-          {"frames", "N", "exit after drawing N frames (0: never)", "0"},
-          {"seconds", "S", "exit after S seconds (0: never)", "0"},
-          {"encoding", "proto|json", "WebSocket subprotocol", "proto"},
-      });
+      std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   if (Status status = options.parse(arguments); !status) return fail(status.error());
   if (options.helpRequested()) {
     std::cout << options.help();
     return 0;
   }
-  auto address = client::parseServerUrl(options.text("url"));
+  auto connection = client::parseConnectionOptions(options);
   auto size = options.size("size", 8192);
   auto frameLimit = options.integer("frames", 0, 1 << 30);
   auto seconds = options.number("seconds");
-  if (!address) return fail(address.error());
+  if (!connection) return fail(connection.error());
   if (!size) return fail(size.error());
   if (!frameLimit) return fail(frameLimit.error());
   if (!seconds || *seconds < 0.0) return fail("--seconds expects a number >= 0");
-  const std::string encoding = options.text("encoding");
-  if (encoding != "proto" && encoding != "json") return fail("--encoding expects proto or json, got '" + encoding + "'");
 
-  auto connected = client::SpeculaClient::connect(*address, encoding == "json" ? net::Encoding::Json : net::Encoding::Proto);
+  auto connected = client::SpeculaClient::connect(connection->address, connection->encoding);
   if (!connected) return fail(connected.error());
   if (!glfwInit()) return fail("cannot open a window: no display (set DISPLAY, or run under xvfb-run)");
   GLFWwindow* window = glfwCreateWindow(size->first, size->second, "Specula", nullptr, nullptr);

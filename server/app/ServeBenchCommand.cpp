@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "ConnectionOptions.h"
 #include "LoadRun.h"
 #include "base/CommandLine.h"
 #include "app/Commands.h"
@@ -64,8 +65,8 @@ int runServeBench(std::span<const std::string> arguments) {
   if (!seconds || *seconds <= 0.0 || *seconds > 3600.0) return fail("--seconds expects a number in (0, 3600]");
   if (!warmup || *warmup < 0.0 || *warmup > 600.0) return fail("--warmup expects a number in [0, 600]");
   if (!renderThreads) return fail(renderThreads.error());
-  const std::string encoding = options.text("encoding");
-  if (encoding != "proto" && encoding != "json") return fail("--encoding expects proto or json, got '" + encoding + "'");
+  auto encoding = client::parseEncoding(options.text("encoding"));
+  if (!encoding) return fail(encoding.error());
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   auto sessionCounts = options.integerList("sessions", 1, 256);
   auto sizes = options.sizeList("sizes", 4096);
@@ -100,7 +101,7 @@ int runServeBench(std::span<const std::string> arguments) {
     for (int sessions : *sessionCounts) {
       client::LoadOptions load;
       load.address = {"127.0.0.1", (*service)->port(), ""};
-      load.encoding = encoding == "proto" ? net::Encoding::Proto : net::Encoding::Json;
+      load.encoding = *encoding;
       load.sessions = sessions;
       load.width = width;
       load.height = height;
@@ -134,7 +135,7 @@ int runServeBench(std::span<const std::string> arguments) {
   }
   json += "\n]}\n";
   (*service)->stop();
-  std::cout << "scene " << (*scene)->name << ", " << encoding << " encoding, " << *renderThreads
+  std::cout << "scene " << (*scene)->name << ", " << options.text("encoding") << " encoding, " << *renderThreads
             << " render thread(s); latency = camera update sent -> frame reflecting it received\n"
             << table;
   for (const char* option : {"csv", "json"})

@@ -1,0 +1,26 @@
+#include "ConnectionOptions.h"
+
+namespace specula::client {
+
+std::vector<OptionSpec> connectionOptions() {
+  return {
+      {"url", "URL", "server address; add ?token=SECRET when the server needs one", "ws://127.0.0.1:8080"},
+      {"encoding", "proto|json", "WebSocket subprotocol: specula.v1.proto or specula.v1.json", "proto"},
+  };
+}
+
+Result<net::Encoding> parseEncoding(const std::string& text) {
+  if (text == "proto") return net::Encoding::Proto;
+  if (text == "json") return net::Encoding::Json;
+  return Error{"--encoding expects proto or json, got '" + text + "'"};
+}
+
+Result<Connection> parseConnectionOptions(const CommandLine& options) {
+  auto address = parseServerUrl(options.text("url"));
+  if (!address) return Error{address.error()};
+  auto encoding = parseEncoding(options.text("encoding"));
+  if (!encoding) return Error{encoding.error()};
+  return Connection{*address, *encoding};
+}
+
+}  // namespace specula::client

@@ -1,0 +1,20 @@
+#pragma once
+// The command-line options every client shares: where the server is and which encoding to speak.
+#include "SpeculaClient.h"
+#include "base/CommandLine.h"
+
+namespace specula::client {
+
+struct Connection {
+  ServerAddress address;
+  net::Encoding encoding = net::Encoding::Proto;
+};
+
+// --url and --encoding, for a tool's option table.
+std::vector<OptionSpec> connectionOptions();
+// Reads them, or says which is wrong and what it accepts.
+Result<Connection> parseConnectionOptions(const CommandLine& options);
+// "proto" or "json" (the --encoding values).
+Result<net::Encoding> parseEncoding(const std::string& text);
+
+}  // namespace specula::client

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdio>
 #include <deque>
+#include <fstream>
 #include <iostream>
 #include <mutex>
 #include <map>
@@ -18,6 +19,7 @@
 #include "OrbitCamera.h"
 #include "SpeculaClient.h"
 #include "base/CommandLine.h"
+#include "encode/PngEncoder.h"
 
 namespace {
 
@@ -105,6 +107,7 @@ int main(int argc, char** argv) {
            {"size", "WxH", "window size", "960x540"},
            {"frames", "N", "exit after drawing N frames (0: never)", "0"},
            {"seconds", "S", "exit after S seconds (0: never)", "0"},
+           {"screenshot", "FILE.png", "on exit, save what the window showed last", ""},
        })
     specs.push_back(spec);
   CommandLine options(
@@ -227,6 +230,18 @@ int main(int argc, char** argv) {
   std::uint64_t drawn = 0, framesThisSecond = 0;
   double latencyMs = 0.0;
   std::optional<v1::Frame> shown;
+  // The last frame, stretched over the window; frame row 0 is the top, so it is blitted upside down.
+  auto drawWindow = [&] {
+    glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (textureWidth == 0) return;
+    bindFramebuffer(0x8CA8 /* GL_READ_FRAMEBUFFER */, framebuffer);
+    framebufferTexture2D(0x8CA8, 0x8CE0 /* GL_COLOR_ATTACHMENT0 */, GL_TEXTURE_2D, texture, 0);
+    blitFramebuffer(0, 0, textureWidth, textureHeight, 0, framebufferHeight, framebufferWidth, 0, GL_COLOR_BUFFER_BIT,
+                    GL_LINEAR);
+    bindFramebuffer(0x8CA8, 0);
+  };
   const Clock::time_point start = Clock::now();
   Clock::time_point secondStart = start;
   std::string problem;
@@ -261,16 +276,7 @@ int main(int argc, char** argv) {
         }
       }
     }
-    glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    if (textureWidth > 0) {  // frame row 0 is the top: blit upside down onto the window
-      bindFramebuffer(0x8CA8 /* GL_READ_FRAMEBUFFER */, framebuffer);
-      framebufferTexture2D(0x8CA8, 0x8CE0 /* GL_COLOR_ATTACHMENT0 */, GL_TEXTURE_2D, texture, 0);
-      blitFramebuffer(0, 0, textureWidth, textureHeight, 0, framebufferHeight, framebufferWidth, 0,
-                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
-      bindFramebuffer(0x8CA8, 0);
-    }
+    drawWindow();
     glfwSwapBuffers(window);
 
     const Clock::time_point now = Clock::now();
@@ -290,6 +296,20 @@ int main(int argc, char** argv) {
     }
     if (*frameLimit > 0 && drawn >= static_cast<std::uint64_t>(*frameLimit)) break;
     if (*seconds > 0.0 && now - start >= std::chrono::duration<double>(*seconds)) break;
+  }
+  if (options.has("screenshot")) {  // the window as drawn, read back before it closes
+    drawWindow();  // the back buffer: after a swap its contents are undefined
+    std::vector<std::uint8_t> shot(static_cast<std::size_t>(framebufferWidth) * static_cast<std::size_t>(framebufferHeight) * 4);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, framebufferWidth, framebufferHeight, GL_RGBA, GL_UNSIGNED_BYTE, shot.data());
+    std::vector<std::uint8_t> topDown(shot.size());
+    const std::size_t row = static_cast<std::size_t>(framebufferWidth) * 4;
+    for (int y = 0; y < framebufferHeight; ++y)
+      std::copy_n(shot.data() + static_cast<std::size_t>(framebufferHeight - 1 - y) * row, row, topDown.data() + static_cast<std::size_t>(y) * row);
+    auto png = encode::encodePng({topDown.data(), framebufferWidth, framebufferHeight});
+    std::ofstream file(options.text("screenshot"), std::ios::binary | std::ios::trunc);
+    if (png) file.write(reinterpret_cast<const char*>(png->data()), static_cast<std::streamsize>(png->size()));
+    if (!png || !file) problem = "could not write the screenshot '" + options.text("screenshot") + "'";
   }
   link.stop = true;
   network.join();

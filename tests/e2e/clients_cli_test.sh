@@ -51,9 +51,11 @@ check "it shows live progress" grep -q "specula-load: 1/1 s" "$work/load.err"
 "$bin/specula-load" --url "ws://127.0.0.1:1" --seconds 1 >"$work/ldown.out" 2>&1
 check "specula-load says when the server is unreachable" bash -c "grep -q 'cannot connect to 127.0.0.1:1' '$work/ldown.out'"
 
-xvfb-run -a "$bin/specula-view" --url "$url" --frames 3 --seconds 60 >"$work/view.out" 2>&1
+xvfb-run -a "$bin/specula-view" --url "$url" --frames 3 --seconds 60 --size 320x180 --screenshot "$work/view.png" >"$work/view.out" 2>&1
 check "specula-view runs under Xvfb, draws frames and exits cleanly" test $? -eq 0
 check "it reports the frames it drew" grep -q "specula-view: drew 3 frames" "$work/view.out"
+# A blank 320x180 window compresses to a few hundred bytes; the quad scene's window to several KB.
+check "its window showed the scene, not a blank" test "$(stat -c %s "$work/view.png")" -gt 3000
 "$bin/specula-view" --url "ws://127.0.0.1:1" >"$work/vdown.out" 2>&1
 check "specula-view says when the server is unreachable" bash -c "grep -q 'cannot connect to 127.0.0.1:1' '$work/vdown.out'"
 

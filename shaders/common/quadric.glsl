@@ -22,13 +22,15 @@ bool facesEye(vec3 unitPoint, vec3 unitEye) { return dot(unitPoint, unitEye) >= 
 
 // First hit of the ray from `eye` along `direction` (world space); false when it misses.
 // Solved in the quadric's unit-sphere space in a stable form (half-b, the second root from the
-// product of roots), which stays exact at grazing incidence.
+// product of roots), which stays exact at grazing incidence; the discriminant comes from the ray's
+// closest approach, not halfB² − c, which cancels to nothing for an eye 10^4 radii away.
 bool eyeRayHitsQuadric(vec3 eye, vec3 worldDirection, out vec3 position, out vec3 normal) {
   vec3 origin = toUnitSpace(eye);
   vec3 direction = normalize(mat3(quadricWorldToObject) * worldDirection / quadricRadii);
   float halfB = dot(origin, direction);
   float c = dot(origin, origin) - 1.0;
-  float discriminant = halfB * halfB - c;
+  vec3 closest = origin - halfB * direction;
+  float discriminant = 1.0 - dot(closest, closest);
   if (discriminant < 0.0) return false;
   float q = -halfB - (halfB < 0.0 ? -1.0 : 1.0) * sqrt(discriminant);
   float t0 = q, t1 = c / q;
@@ -48,10 +50,11 @@ bool behindQuadric(vec3 eye, vec3 vertex) {
   vec3 axis = origin / distance;
   float along = dot(target, axis);
   if (along >= 1.0 / distance) return false;  // on the eye's side of the silhouette
-  // Inside the cone: the angle from the axis, seen from the eye, is below the cone's half-angle.
+  // Inside the cone: the angle from the axis, seen from the eye, is below the cone's half-angle,
+  // whose sine is 1 / distance. Compared as sines: a far eye's cosine rounds to 1.
   vec3 fromEye = target - origin;
-  float cosine = dot(fromEye, -axis) / length(fromEye);
-  return cosine > sqrt(1.0 - 1.0 / (distance * distance));
+  vec3 across = cross(fromEye, axis);
+  return dot(fromEye, -axis) > 0.0 && dot(across, across) * distance * distance < dot(fromEye, fromEye);
 }
 
 // The point of the quadric's silhouette (seen from `eye`) in the plane of the eye, the centre and

@@ -14,6 +14,8 @@ uniform vec3 eyePosition;
 uniform int maxWalkSteps;
 
 const float kInvalid = -3.0;   // below any reflectionObjective
+const float kContactHeight = 1e-3;  // unit-sphere radii: closer vertices reflect from their foot point
+const float kStalledResidual = 0.1;  // normal and bisector still this far apart (sine): the refinement is lost
 const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
                                       ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
 
@@ -153,7 +155,15 @@ vec3 tangentialBisectorOnQuadric(vec3 unitPoint) {
 // of the unit sphere's tangent plane at the current point: unlike G-buffer coordinates they stay
 // well conditioned up to the silhouette, where one texel spans a wide arc of the surface and the
 // bilinear surface strays from the true one.
-void refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
+// Returns false when it is lost: far from any reflection point (a start on the wrong side).
+bool refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
+  vec3 unitVertex = toUnitSpace(vertexWorld);
+  // A vertex touching the mirror (or on or in it) reflects from within its height of its foot
+  // point, where the residual turns too fast for float derivatives: take the foot point.
+  if (length(unitVertex) - 1.0 < kContactHeight) {
+    quadricSurface(normalize(unitVertex), position, normal);
+    return true;
+  }
   vec3 unitEye = toUnitSpace(eyePosition);
   // Central-difference step, radians on the unit sphere: below the vertex's height above the
   // surface, over which the residual turns when the vertex nearly touches the mirror.
@@ -188,34 +198,48 @@ void refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
     if (length(step) < 1e-6) break;  // converged to float precision
   }
   quadricSurface(u, position, normal);
+  return length(tangentialBisectorOnQuadric(u)) < kStalledResidual;
 }
 
 // Finds the reflection of `vertex` (world space) in the mirror on G-buffer layer `layer`;
 // state.xy is the texel reached (the next search's seed), state.z the steps, state.w the flags.
-ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed) {
+// `retryWhenLost`: if the refinement from a seeded climb is lost, search again from the pyramid
+// (seeds from last frame; this frame's seeds, as edge midpoints get, are never that stale).
+ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool retryWhenLost) {
   vertexWorld = vertex;
   int steps = 0, flags = 0;
   float value = kInvalid;
   ivec2 texel = seed;
   bool warm = useSeed && objectiveAt(texel, 0) > kInvalid;
   if (warm) texel = climb(texel, 0, maxWalkSteps, steps, value);
-  if (!warm || steps >= maxWalkSteps) {  // no seed, or the seed was too far: start from the pyramid
-    int coldSteps = 0;
-    float coldValue;
-    ivec2 coldTexel = coldSearch(coldSteps, coldValue);
-    steps += coldSteps;
-    flags |= kReflectionColdStart;
-    if (coldValue > value) {
-      texel = coldTexel;
-      value = coldValue;
+  bool fromPyramid = !warm || steps >= maxWalkSteps;  // no seed, or the seed was too far
+  vec3 r, n;
+  // At most two rounds, written as a loop so the pyramid search and the refinement are each
+  // compiled once (this function is inlined into every search).
+  while (true) {
+    if (fromPyramid && (flags & kReflectionColdStart) == 0) {
+      int coldSteps = 0;
+      float coldValue;
+      ivec2 coldTexel = coldSearch(coldSteps, coldValue);
+      steps += coldSteps;
+      flags |= kReflectionColdStart;
+      if (coldValue > value) {
+        texel = coldTexel;
+        value = coldValue;
+      }
     }
+    if (value <= kInvalid || analytic == 0) break;
+    bool converged = refineOnQuadric(texelFetch(gbufferPosition, ivec3(texel, layer), 0).xyz, r, n);
+    // A stale seed (the camera jumped) can stall the climb far from the answer, where the refinement
+    // cannot reach it: search again from the pyramid. Hidden vertices have no answer to converge to.
+    if (converged || !retryWhenLost || (flags & kReflectionColdStart) != 0 || behindQuadric(eyePosition, vertexWorld)) break;
+    fromPyramid = true;
+    value = kInvalid;  // the stalled texel must not win against the pyramid's
   }
 
   ReflectedVertex result;
-  vec3 r, n;
-  if (value > kInvalid && analytic != 0) {
-    refineOnQuadric(texelFetch(gbufferPosition, ivec3(texel, layer), 0).xyz, r, n);
-  } else if (value <= kInvalid || !surfaceAt(refine(texel), r, n)) {
+  bool refinedExactly = value > kInvalid && analytic != 0;  // r and n came from refineOnQuadric
+  if (!refinedExactly && (value <= kInvalid || !surfaceAt(refine(texel), r, n))) {
     vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
     r = p.xyz;
     n = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);

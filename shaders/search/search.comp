@@ -22,7 +22,7 @@ void main() {
   uint slot = firstSlot + index;
   vec3 vertex = (objectToWorld * vec4(meshVertex[8u * index], meshVertex[8u * index + 1u], meshVertex[8u * index + 2u], 1.0)).xyz;
   ReflectedVertex last = reflected[slot];
-  ReflectedVertex result = searchReflection(vertex, last.state.xy, useCoherence != 0 && (last.state.w & kReflectionUnsolved) == 0);
+  ReflectedVertex result = searchReflection(vertex, last.state.xy, useCoherence != 0 && (last.state.w & kReflectionUnsolved) == 0, true);
   reflected[slot] = result;
   countSearch(result.state.z, result.state.w);
 }

@@ -86,7 +86,7 @@ TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
   vec3 normal = 0.5 * (a.normalV.xyz + b.normalV.xyz);
   vec2 uv = 0.5 * (vec2(a.positionU.w, a.normalV.w) + vec2(b.positionU.w, b.normalV.w));
   ivec2 seed = ivec2(round(0.5 * (vec2(a.reflectionTexelX.w, a.normalTexelY.w) + vec2(b.reflectionTexelX.w, b.normalTexelY.w))));
-  ReflectedVertex reflection = searchReflection(position, seed, true);
+  ReflectedVertex reflection = searchReflection(position, seed, true, false);
   countSearch(reflection.state.z, reflection.state.w);
   return makeTessellatedVertex(position, dot(normal, normal) > 0.0 ? normalize(normal) : normal, uv, reflection);
 }

@@ -1,0 +1,270 @@
+// Where reflections are hardest: the search against the exact sphere solver (server/math) on
+// configurations chosen to break it, and on 10^5 random ones. Every case asserts that nothing is
+// NaN or Inf and that visible reflection points stay within a bound, in pixels, of the exact answer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "bench/ReflectionAccuracy.h"
+#include "gl/GlContext.h"
+#include "render/Renderer.h"
+#include "scene/Primitives.h"
+#include "scene/SceneChecks.h"
+#include "scene/ScenePose.h"
+#include "scene/builtin/SceneAssembly.h"
+
+namespace specula::testing {
+namespace {
+
+using namespace scene::builtin;
+
+// A unit sphere mirror centred at `centre` and one reflected object whose vertices are given relative
+// to that centre (placed there, as a modeller places a local mesh far from the origin).
+std::shared_ptr<const scene::Scene> sphereAndObject(const glm::vec3& centre, const std::vector<glm::vec3>& positions,
+                                                    std::vector<std::uint32_t> indices) {
+  scene::Scene scene;
+  scene.name = "hard-case";
+  scene.lights.push_back(sunLight({1.0f, 2.0f, 1.0f}, 1.0f));
+  const std::uint32_t sphere = addSphereMirror(scene, "mirror", addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 96, 48)),
+                                               addMaterial(scene, perfectMirror("mirror")), 1.0f, placed(centre));
+  scene.objects[sphere].reflected = false;
+  scene::Mesh mesh;
+  mesh.name = "object";
+  for (const glm::vec3& p : positions) mesh.vertices.push_back({p, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec2(0.0f)});
+  mesh.indices = std::move(indices);
+  addObject(scene, "object", addMesh(scene, std::move(mesh)), addMaterial(scene, matte("grey", 0x808080)), placed(centre));
+  return std::make_shared<const scene::Scene>(std::move(scene));
+}
+
+// Consecutive triples as triangles (the last corners repeat to fill the final one).
+std::vector<std::uint32_t> triples(std::size_t count) {
+  std::vector<std::uint32_t> indices;
+  for (std::size_t i = 0; i < (count + 2) / 3 * 3; ++i) indices.push_back(static_cast<std::uint32_t>(std::min(i, count - 1)));
+  return indices;
+}
+
+struct Outcome {
+  std::size_t slots = 0, nonFinite = 0;
+  bench::ReflectionPointErrors errors;
+};
+
+// Renders the pose and checks every reflection result of the object: finite, and where the exact
+// solver and the search both see a reflection, how far apart they land in pixels.
+Outcome renderAndMeasure(render::Renderer& renderer, const math::Camera& camera, int width, int height,
+                         passes::ReflectionSettings settings = {}) {
+  scene::ScenePose pose = scene::ScenePose::at(renderer.scene(), 0.0);
+  pose.camera = camera;
+  Outcome out;
+  auto frame = renderer.render(pose, width, height, settings);
+  EXPECT_TRUE(frame) << (frame ? "" : frame.error());
+  if (!frame) return out;
+  for (const passes::ReflectedVertex& result : renderer.readReflectedVertices()) {
+    ++out.slots;
+    for (int axis = 0; axis < 4; ++axis)
+      if (!std::isfinite(result.virtualPosition[axis]) || !std::isfinite(result.reflectionPoint[axis])) {
+        ++out.nonFinite;
+        break;
+      }
+  }
+  for (std::size_t i = 0; i < frame->rgba.size(); i += 4) EXPECT_EQ(frame->rgba[i + 3], 255u) << "an undefined pixel";
+  out.errors = bench::measureReflectionPoints(renderer, pose, *frame);
+  return out;
+}
+
+std::unique_ptr<gl::GlContext> context() {
+  auto created = gl::GlContext::create(gl::PlatformChoice::Auto);
+  EXPECT_TRUE(created) << created.error();
+  return created ? std::move(*created) : nullptr;
+}
+
+math::Camera lookAt(const glm::vec3& eye, const glm::vec3& target, float fovDegrees) {
+  return {eye, target, glm::vec3(0.0f, 1.0f, 0.0f), fovDegrees};
+}
+
+struct HardCase {
+  const char* name;
+  glm::vec3 centre;                 // where the mirror (and the object) sit
+  std::vector<glm::vec3> vertices;  // relative to the centre
+  math::Camera camera;              // relative to the centre (moved with it)
+  double maxErrorPixels;            // bound on every measured reflection point
+  bool expectMeasured = true;       // some vertex has a visible reflection to compare
+  bool judged = true;               // false: no reflection is defined (vertices on or in the mirror); finite only
+};
+
+// Points on a ring of `radius` about the axis `axis` through the centre, at `count` angles.
+std::vector<glm::vec3> ring(const glm::vec3& axis, float along, float radius, int count) {
+  const glm::vec3 a = glm::normalize(axis);
+  const glm::vec3 u = glm::normalize(glm::cross(a, std::abs(a.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+  const glm::vec3 v = glm::cross(a, u);
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < count; ++i) {
+    const float angle = 6.2831853f * static_cast<float>(i) / static_cast<float>(count);
+    points.push_back(a * along + radius * (std::cos(angle) * u + std::sin(angle) * v));
+  }
+  return points;
+}
+
+std::vector<glm::vec3> concat(std::initializer_list<std::vector<glm::vec3>> parts) {
+  std::vector<glm::vec3> all;
+  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
+std::vector<HardCase> hardCases() {
+  const glm::vec3 origin(0.0f);
+  const glm::vec3 eyeZ(0.0f, 0.0f, 5.0f);
+  const auto standard = lookAt(eyeZ, origin, 40.0f);
+  // A shell of points around the sphere that every placement reuses.
+  const std::vector<glm::vec3> shell = concat({ring({0, 1, 0}, 0.0f, 2.0f, 24), ring({0, 1, 0}, -1.2f, 1.6f, 24),
+                                               ring({1, 0, 0}, 0.3f, 2.5f, 24), ring({0, 0, 1}, -2.0f, 1.5f, 24)});
+  return {
+      // Eye, centre and vertex (nearly) on one line: behind the sphere (hidden) and in front of it.
+      {"collinear_behind", origin, concat({{{0, 0, -3}, {1e-6f, 0, -3}, {0, 1e-4f, -2}, {0, 0, -1.0001f}}, ring({0, 0, 1}, -3.0f, 1e-3f, 12)}),
+       standard, 0.05, false},
+      {"collinear_in_front", origin, concat({{{0, 0, 2}, {1e-6f, 0, 3}, {0, 1e-4f, 1.5f}, {0, 0, 4.9f}}, ring({0, 0, 1}, 2.5f, 1e-3f, 12)}),
+       standard, 0.05},
+      // Vertices and eye both near the horizon: reflection points at grazing angles on the silhouette.
+      {"grazing", origin, concat({ring({0, 0, 1}, -0.05f, 1.05f, 48), ring({0, 0, 1}, 0.02f, 1.2f, 48)}),
+       lookAt({0.0f, 0.0f, 3.0f}, origin, 50.0f), 0.1},
+      // An object touching the mirror (gap 1e-4 radius); vertices exactly on or just inside the surface
+      // have no defined reflection: they must only stay finite.
+      {"touching_with_a_gap_of_1e4th", origin,
+       concat({ring({0, 1, 0}, 0.0f, 1.0001f, 36), ring({1, 0, 0}, 0.5f, std::sqrt(1.0001f * 1.0001f - 0.25f), 36)}),
+       standard, 0.05},
+      {"on_and_inside_the_surface", origin,
+       concat({ring({0, 1, 0}, 0.0f, 1.0f, 36), ring({0, 1, 0}, 0.3f, 0.9999f * std::sqrt(1.0f - 0.09f), 36)}),
+       standard, 0.0, false, false},
+      {"camera_very_close", origin, shell, lookAt({0.0f, 0.0f, 1.002f}, {0.0f, 0.0f, -1.0f}, 100.0f), 0.1},
+      {"camera_very_far", origin, shell, lookAt({0.0f, 0.0f, 1e4f}, origin, 0.02f), 0.05},
+      {"translated_1e3", {1000.0f, -300.0f, 1000.0f}, shell, standard, 0.1},
+      {"translated_1e4", {10000.0f, 0.0f, -10000.0f}, shell, standard, 0.5},
+      {"mirror_half_off_screen", origin, shell, lookAt(eyeZ, {1.8f, 0.0f, 0.0f}, 40.0f), 0.05},
+      {"mirror_a_few_pixels", origin, shell, lookAt({0.0f, 0.0f, 400.0f}, origin, 40.0f), 0.05},
+      {"mirror_fills_the_screen", origin, shell, lookAt({0.0f, 0.0f, 1.5f}, origin, 40.0f), 0.05},
+  };
+}
+
+class HardCases : public ::testing::TestWithParam<HardCase> {};
+
+TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
+  const HardCase& hard = GetParam();
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  auto scene = sphereAndObject(hard.centre, hard.vertices, triples(hard.vertices.size()));
+  ASSERT_EQ(scene::sceneProblem(*scene), std::nullopt);
+  auto renderer = render::Renderer::create(*gl, scene);
+  ASSERT_TRUE(renderer) << renderer.error();
+  math::Camera camera = hard.camera;
+  camera.eye += hard.centre;
+  camera.target += hard.centre;
+  for (auto mode : {passes::TessellationMode::None, passes::TessellationMode::CrackFree}) {
+    passes::ReflectionSettings settings;
+    settings.tessellation.mode = mode;
+    const Outcome outcome = renderAndMeasure(**renderer, camera, 320, 240, settings);
+    EXPECT_GT(outcome.slots, 0u);
+    EXPECT_EQ(outcome.nonFinite, 0u) << "NaN or Inf in a reflection result";
+    if (!hard.judged) continue;
+    if (hard.expectMeasured) {
+      EXPECT_FALSE(outcome.errors.pixels.empty()) << "no visible reflection to compare";
+    }
+    if (!outcome.errors.pixels.empty()) {
+      EXPECT_LE(outcome.errors.percentile(1.0), hard.maxErrorPixels)
+          << "p50 " << outcome.errors.percentile(0.5) << " over " << outcome.errors.pixels.size() << " vertices";
+    }
+    EXPECT_LE(outcome.errors.exactHiddenButSearchVisible + outcome.errors.searchHiddenButExactVisible, 1);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sphere, HardCases, ::testing::ValuesIn(hardCases()),
+                         [](const auto& test) { return std::string(test.param.name); });
+
+TEST(HardCasesGeometry, DegenerateSliverAndDuplicatedTrianglesStayFinite) {
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  const std::vector<glm::vec3> vertices = {
+      {1.5f, 0.2f, 0.5f}, {1.5f, 0.2f, 0.5f}, {1.5f, 0.2f, 0.5f},           // one point three times: zero area
+      {1.2f, 0.0f, 1.0f}, {1.6f, 0.0f, 1.0f}, {2.0f, 0.0f, 1.0f},           // collinear: zero area
+      {1.2f, 0.5f, 1.0f}, {2.5f, 0.5f, 1.0f}, {1.85f, 0.5f + 1e-6f, 1.0f},  // a sliver
+      {0.0f, 1.3f, 1.0f}, {0.4f, 1.3f, 1.0f}, {0.2f, 1.6f, 1.0f},           // a normal triangle ...
+      {0.0f, 1.3f, 1.0f}, {0.4f, 1.3f, 1.0f}, {0.2f, 1.6f, 1.0f},           // ... and its duplicate
+  };
+  auto scene = sphereAndObject(glm::vec3(0.0f), vertices, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 9, 9, 10});
+  auto renderer = render::Renderer::create(*gl, scene);
+  ASSERT_TRUE(renderer) << renderer.error();
+  for (float threshold : {1.0f, 0.0f}) {  // threshold 0 at the level limit: every edge splits
+    passes::ReflectionSettings settings;
+    settings.tessellation.threshold = threshold;
+    const Outcome outcome = renderAndMeasure(**renderer, lookAt({0.5f, 0.8f, 4.0f}, glm::vec3(0.0f), 45.0f), 320, 240, settings);
+    EXPECT_EQ(outcome.nonFinite, 0u);
+    ASSERT_FALSE(outcome.errors.pixels.empty());
+    EXPECT_LE(outcome.errors.percentile(1.0), 0.05);
+  }
+}
+
+TEST(HardCasesGeometry, ACameraTeleportStartsFromStaleSeedsAndStillConverges) {
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  std::vector<glm::vec3> vertices = concat({ring({0, 1, 0}, 0.0f, 2.0f, 48), ring({1, 0, 0}, 0.5f, 2.5f, 48)});
+  auto scene = sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()));
+  auto renderer = render::Renderer::create(*gl, scene);
+  ASSERT_TRUE(renderer) << renderer.error();
+  // Warm seeds from one side, then the opposite side and a far jump: seeds point at the wrong texels.
+  for (const glm::vec3& eye : {glm::vec3(0, 0, 5), glm::vec3(0, 0.5f, -5), glm::vec3(4, 3, 0.2f), glm::vec3(0, 0, 5)}) {
+    const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, glm::vec3(0.0f), 45.0f), 320, 240);
+    EXPECT_EQ(outcome.nonFinite, 0u);
+    ASSERT_FALSE(outcome.errors.pixels.empty());
+    EXPECT_LE(outcome.errors.percentile(1.0), 0.05) << "eye " << eye.x << "," << eye.y << "," << eye.z;
+  }
+}
+
+// 200 random eyes × 500 random vertices = 10^5 (mirror, eye, vertex) configurations.
+TEST(HardCasesRandomized, AHundredThousandConfigurationsAgreeWithTheExactSolver) {
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  std::mt19937 random(20261202);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  auto direction = [&] {
+    const float z = 2.0f * unit(random) - 1.0f, angle = 6.2831853f * unit(random);
+    const float r = std::sqrt(1.0f - z * z);
+    return glm::vec3(r * std::cos(angle), z, r * std::sin(angle));
+  };
+  auto logUniform = [&](float low, float high) { return low * std::pow(high / low, unit(random)); };
+  constexpr int kVertices = 500, kEyes = 200;
+  std::vector<glm::vec3> vertices;
+  for (int i = 0; i < kVertices; ++i) vertices.push_back(direction() * logUniform(1.0001f, 20.0f));
+  auto scene = sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()));
+  auto renderer = render::Renderer::create(*gl, scene);
+  ASSERT_TRUE(renderer) << renderer.error();
+  passes::ReflectionSettings settings;
+  settings.tessellation.mode = passes::TessellationMode::None;  // the search itself is under test
+  std::size_t configurations = 0, nonFinite = 0, measured = 0, misjudged = 0;
+  std::vector<double> errors;
+  for (int e = 0; e < kEyes; ++e) {
+    const float distance = logUniform(1.05f, 1000.0f);
+    // A field of view that shows the sphere at 20-90 % of the frame height, aimed a little off centre.
+    const float fov = 2.0f * glm::degrees(std::asin(1.0f / distance)) / (0.2f + 0.7f * unit(random));
+    const glm::vec3 eye = direction() * distance;
+    const glm::vec3 target = 0.3f * (direction() * unit(random));
+    const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, target, std::min(fov, 120.0f)), 160, 120, settings);
+    configurations += outcome.slots;
+    nonFinite += outcome.nonFinite;
+    measured += outcome.errors.pixels.size();
+    misjudged += static_cast<std::size_t>(outcome.errors.exactHiddenButSearchVisible + outcome.errors.searchHiddenButExactVisible);
+    errors.insert(errors.end(), outcome.errors.pixels.begin(), outcome.errors.pixels.end());
+  }
+  EXPECT_EQ(configurations, static_cast<std::size_t>(kVertices * kEyes));
+  EXPECT_EQ(nonFinite, 0u) << "NaN or Inf in a reflection result";
+  ASSERT_GT(measured, configurations / 20) << "too few visible reflections to judge";
+  std::sort(errors.begin(), errors.end());
+  const double p99 = errors[errors.size() * 99 / 100], worst = errors.back();
+  EXPECT_LE(p99, 0.01) << "p50 " << errors[errors.size() / 2];
+  EXPECT_LE(worst, 0.5) << "the worst are vertices within 0.004 radii of the surface";
+  EXPECT_LE(misjudged, measured / 10000) << "hidden/visible disagreements";
+  RecordProperty("measured", static_cast<int>(measured));
+  std::printf("randomized: %zu configurations, %zu measured, p50 %.2g px, p99 %.2g px, max %.2g px, %zu misjudged\n",
+              configurations, measured, errors[errors.size() / 2], p99, worst, misjudged);
+}
+
+}  // namespace
+}  // namespace specula::testing

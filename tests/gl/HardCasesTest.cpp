@@ -12,6 +12,7 @@
 #include "scene/Primitives.h"
 #include "scene/SceneChecks.h"
 #include "scene/ScenePose.h"
+#include "scene/builtin/BuiltinScenes.h"
 #include "scene/builtin/SceneAssembly.h"
 
 namespace specula::testing {
@@ -264,6 +265,32 @@ TEST(HardCasesRandomized, AHundredThousandConfigurationsAgreeWithTheExactSolver)
   RecordProperty("measured", static_cast<int>(measured));
   std::printf("randomized: %zu configurations, %zu measured, p50 %.2g px, p99 %.2g px, max %.2g px, %zu misjudged\n",
               configurations, measured, errors[errors.size() / 2], p99, worst, misjudged);
+}
+
+}  // namespace
+}  // namespace specula::testing
+
+namespace specula::testing {
+namespace {
+
+// The kitchen's steel bowl is concave inside: objects in it sit in the caustic region, where a vertex
+// has several reflection points. The search keeps one; nothing may become NaN or Inf on the way.
+TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  auto renderer = render::Renderer::create(*gl, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("kitchen")));
+  ASSERT_TRUE(renderer) << renderer.error();
+  for (double t : {0.0, 5.0, 10.0}) {  // the camera path runs from far to right above the bowl
+    const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
+    auto frame = (*renderer)->render(pose, 320, 240);
+    ASSERT_TRUE(frame) << frame.error();
+    EXPECT_GT(frame->search.searched, 0u) << "t=" << t;
+    std::size_t nonFinite = 0;
+    for (const passes::ReflectedVertex& result : (*renderer)->readReflectedVertices())
+      for (int axis = 0; axis < 4; ++axis)
+        nonFinite += !std::isfinite(result.virtualPosition[axis]) || !std::isfinite(result.reflectionPoint[axis]);
+    EXPECT_EQ(nonFinite, 0u) << "t=" << t;
+  }
 }
 
 }  // namespace

@@ -300,3 +300,37 @@ TEST(StrictJson, ReportsSyntaxErrorsWithLineAndColumn) {
   EXPECT_NE(document.error().find("invalid JSON: parse error at line 3, column 1"), std::string::npos)
       << document.error();
 }
+
+namespace specula::scene {
+namespace {
+
+// Numbers JSON cannot hold exactly: overflow to infinity, or NaN spelled out. Each must be refused at
+// load with a message naming where, never reach a renderer.
+TEST(SceneLoader, RejectsNonFiniteNumbersAtLoad) {
+  const std::vector<std::string> bad = {
+      R"({"specula_scene": 1, "camera": {"eye": [0, 0, 1e999], "target": [0, 0, 0]},
+          "meshes": [{"name": "m", "primitive": {"type": "box", "size": [1, 1, 1]}}],
+          "materials": [{"name": "a", "color": "#ffffff"}], "objects": [{"name": "o", "mesh": "m", "material": "a"}]})",
+      R"({"specula_scene": 1, "camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+          "meshes": [{"name": "m", "primitive": {"type": "box", "size": [1, -1e999, 1]}}],
+          "materials": [{"name": "a", "color": "#ffffff"}], "objects": [{"name": "o", "mesh": "m", "material": "a"}]})",
+      R"({"specula_scene": 1, "camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+          "meshes": [{"name": "m", "primitive": {"type": "box", "size": [1, 1, 1]}}],
+          "materials": [{"name": "a", "color": "#ffffff"}],
+          "objects": [{"name": "o", "mesh": "m", "material": "a", "position": [NaN, 0, 0]}]})",
+      R"({"specula_scene": 1, "camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+          "meshes": [{"name": "m", "primitive": {"type": "box", "size": [1, 1, 1]}}],
+          "materials": [{"name": "a", "color": "#ffffff"}],
+          "objects": [{"name": "o", "mesh": "m", "material": "a", "position": [1e39, 0, 0]}]})",
+  };
+  for (const std::string& json : bad) {
+    Result<Scene> scene = parseScene(json, ".", "inline");
+    EXPECT_FALSE(scene.ok()) << json;
+    if (!scene.ok()) {
+      EXPECT_NE(scene.error().find("inline"), std::string::npos) << scene.error();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace specula::scene

@@ -19,6 +19,7 @@ struct ServerOptions {
   std::size_t maxQueuedControlMessages = 64;
   std::chrono::milliseconds handshakeTimeout{5000};  // HTTP request or WebSocket upgrade
   std::chrono::milliseconds writeTimeout{5000};      // one message to a client that stopped reading
+  std::chrono::milliseconds firstMessageTimeout{5000};  // from the upgrade to the client's first message
   std::chrono::milliseconds idleTimeout{60000};      // no data (pings answered count) from the client
   std::function<std::string()> metricsText;          // GET /metrics body (Prometheus text format)
 };

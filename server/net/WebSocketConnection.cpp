@@ -14,6 +14,7 @@ WebSocketConnection::WebSocketConnection(beast::tcp_stream stream, const ServerO
                                          std::shared_ptr<void> connectionToken)
     : ws_(std::move(stream)),
       writeDeadline_(ws_.get_executor()),
+      firstMessageDeadline_(ws_.get_executor()),
       options_(options),
       acceptor_(acceptor),
       registry_(registry),
@@ -42,6 +43,12 @@ void WebSocketConnection::start(Request request, Encoding encoding, std::string 
     self->registry_.add(self);
     self->ws_.text(self->encoding_ == Encoding::Json);
     self->handler_ = self->acceptor_.accept({self->encoding_, remoteAddress}, self);
+    self->firstMessageDeadline_.expires_after(self->options_.firstMessageTimeout);
+    self->firstMessageDeadline_.async_wait([weak = self->weak_from_this()](beast::error_code waited) {
+      auto connection = weak.lock();
+      if (waited || !connection || connection->receivedMessage_) return;
+      connection->close(CloseCode::PolicyViolation, "no message within the first-message deadline");
+    });
     self->doRead();
   };
   ws_.async_accept(request, std::move(accepted));
@@ -94,6 +101,10 @@ void WebSocketConnection::onRead(beast::error_code error, std::size_t) {
     return close(CloseCode::TooBig, "message over " + std::to_string(options_.maxMessageBytes) + " bytes");
   }
   if (!ws_.is_message_done()) return doRead();
+  if (!receivedMessage_) {
+    receivedMessage_ = true;
+    firstMessageDeadline_.cancel();
+  }
   if (handler_ && !closing_ && !pendingClose_) {
     const auto data = readBuffer_.cdata();
     handler_->onMessage(std::string_view(static_cast<const char*>(data.data()), data.size()), ws_.got_text());
@@ -151,6 +162,7 @@ void WebSocketConnection::finish() {
   if (finished_) return;
   finished_ = true;
   writeDeadline_.cancel();
+  firstMessageDeadline_.cancel();
   control_.clear();
   waitingFrame_.reset();
   registry_.remove(this);

@@ -49,6 +49,8 @@ class WebSocketConnection : public MessageSink, public std::enable_shared_from_t
 
   boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
   boost::asio::steady_timer writeDeadline_;
+  boost::asio::steady_timer firstMessageDeadline_;  // a silent client must not hold a session slot
+  bool receivedMessage_ = false;
   const ServerOptions& options_;
   ConnectionAcceptor& acceptor_;
   ConnectionRegistry& registry_;

@@ -72,6 +72,7 @@ inline RigOptions defaultRigOptions() {
   options.server.port = 0;
   options.server.writeTimeout = 500ms;
   options.server.handshakeTimeout = 1000ms;
+  options.server.firstMessageTimeout = 1000ms;
   options.hub.stillDelay = 100ms;
   options.hub.resumeCapacity = 64;
   return options;

@@ -397,6 +397,20 @@ TEST(StreamingServerLimits, ConnectionsThatNeverFinishTheirRequestAreDroppedAtTh
   EXPECT_FALSE(greet(*client).session_id().empty()) << "the server still serves";
 }
 
+TEST(StreamingServerLimits, AClientThatNeverSaysHelloIsClosedAndFreesItsSessionSlot) {
+  RigOptions options = defaultRigOptions();
+  options.hub.maxSessions = 1;
+  options.server.firstMessageTimeout = 300ms;
+  ServerRig rig(options);
+  auto silent = rig.connect();
+  ASSERT_TRUE(silent);
+  EXPECT_EQ(closeCodeAfter(*silent, 2s), 1008) << "closed at the first-message deadline";
+  for (int i = 0; i < 100 && rig.hub().sessionCount() > 0; ++i) std::this_thread::sleep_for(10ms);
+  auto next = rig.connect();
+  ASSERT_TRUE(next);
+  EXPECT_FALSE(greet(*next).session_id().empty()) << "the slot it held is free again";
+}
+
 TEST(StreamingServerSecurity, ANonLoopbackBindNeedsAToken) {
   RigOptions options = defaultRigOptions();
   options.server.bindAddress = "0.0.0.0";

@@ -1,5 +1,7 @@
 #include "SpeculaClient.h"
 
+#include "net/UrlEncoding.h"
+
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -24,7 +26,8 @@ Result<ServerAddress> parseServerUrl(const std::string& url) {
   if (query != std::string::npos) {
     const std::string parameters = rest.substr(query + 1);
     const std::size_t token = parameters.find("token=");
-    if (token != std::string::npos) address.token = parameters.substr(token + 6, parameters.find('&', token) - token - 6);
+    if (token != std::string::npos)
+      address.token = net::percentDecoded(parameters.substr(token + 6, parameters.find('&', token) - token - 6));
     rest = rest.substr(0, query);
   }
   rest = rest.substr(0, rest.find('/'));
@@ -101,7 +104,7 @@ Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddres
     request.set(beast::http::field::sec_websocket_protocol, subprotocol);
   }));
   state->ws.read_message_max(64u << 20);  // frames can be large
-  const std::string target = address.token.empty() ? "/ws" : "/ws?token=" + address.token;
+  const std::string target = address.token.empty() ? "/ws" : "/ws?token=" + net::percentEncoded(address.token);
   websocket::response_type response;
   bool shaken = false;
   state->ws.async_handshake(response, where, target, [&](beast::error_code e) {

@@ -1,7 +1,9 @@
 #include "net/HttpConnection.h"
 
 #include <boost/beast/websocket.hpp>
+#include <string>
 
+#include "net/UrlEncoding.h"
 #include "net/WebSocketConnection.h"
 
 namespace specula::net {
@@ -21,7 +23,7 @@ std::string_view standard(boost::beast::string_view text) { return {text.data(),
 
 std::string_view pathOf(std::string_view target) { return target.substr(0, target.find('?')); }
 
-// The value of `name` in the query string, undecoded (tokens are plain [A-Za-z0-9_-]).
+// The value of `name` in the query string, still percent-encoded.
 std::string_view queryValue(std::string_view target, std::string_view name) {
   const std::size_t question = target.find('?');
   if (question == std::string_view::npos) return {};
@@ -51,7 +53,8 @@ bool authorized(const http::request<http::empty_body>& request, const std::strin
   std::string_view bearer = standard(request[http::field::authorization]);
   if (bearer.starts_with("Bearer ")) bearer.remove_prefix(7);
   else bearer = {};
-  return equalInConstantTime(queryValue(standard(request.target()), "token"), token) || equalInConstantTime(bearer, token);
+  return equalInConstantTime(percentDecoded(queryValue(standard(request.target()), "token")), token) ||
+         equalInConstantTime(bearer, token);
 }
 
 // The first subprotocol we speak from the client's comma-separated list, or nullopt.

@@ -445,6 +445,21 @@ TEST(StreamingServerSecurity, WithATokenOnlyClientsThatPresentItGetIn) {
   EXPECT_EQ(httpRequest(rig.port(), "/healthz").status, 200) << "health checks need no token";
 }
 
+TEST(StreamingServerSecurity, ATokenInTheUrlIsPercentDecodedAsBrowsersEncodeIt) {
+  RigOptions options = defaultRigOptions();
+  options.server.token = "a b&c%";
+  ServerRig rig(options);
+  EXPECT_EQ(httpRequest(rig.port(), "/metrics?token=a%20b%26c%25").status, 200);
+  EXPECT_EQ(httpRequest(rig.port(), "/metrics?token=a%20b%26c").status, 401);
+  EXPECT_EQ(httpRequest(rig.port(), "/metrics?token=a%2").status, 401) << "a broken escape is no match, not a crash";
+  auto client = rig.connect(Encoding::Proto, "a b&c%");
+  ASSERT_TRUE(client) << "the client encodes the token";
+  EXPECT_FALSE(greet(*client).session_id().empty());
+  auto parsed = client::parseServerUrl("ws://127.0.0.1:" + std::to_string(rig.port()) + "/ws?token=a%20b%26c%25");
+  ASSERT_TRUE(parsed);
+  EXPECT_EQ(parsed->token, "a b&c%") << "a URL's token is decoded once";
+}
+
 // ---- HTTP routes ----
 
 TEST(StreamingServerHttp, ServesHealthMetricsAndStaticFilesAndNothingOutsideTheWebRoot) {

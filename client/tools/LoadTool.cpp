@@ -37,11 +37,7 @@ int main(int argc, char** argv) {
       "errors and bytes; --json writes the same for automation. Exits 1 if any session failed.",
       std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   auto connection = client::parseConnectionOptions(options);
   auto sessions = options.integer("sessions", 1, 1024);
   auto seconds = options.number("seconds");

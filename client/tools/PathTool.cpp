@@ -83,11 +83,7 @@ int main(int argc, char** argv) {
       "server timings, search and tessellation statistics; --frames-dir also keeps every JPEG.",
       std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   if (!options.has("path")) return fail("--path FILE is required (a .json or .csv camera path)");
   auto path = client::loadCameraPath(options.text("path"));
   auto connection = client::parseConnectionOptions(options);

@@ -117,11 +117,7 @@ int main(int argc, char** argv) {
       "once a second. --frames or --seconds end the run (scripts, tests).",
       std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   auto connection = client::parseConnectionOptions(options);
   auto size = options.size("size", 8192);
   auto frameLimit = options.integer("frames", 0, 1 << 30);

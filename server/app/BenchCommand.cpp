@@ -94,11 +94,7 @@ CommandLine tessellationBenchOptions() {
 
 int runTessellationBench(std::span<const std::string> arguments) {
   CommandLine options = tessellationBenchOptions();
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   bench::TessellationBenchOptions settings;
   auto size = options.size("size", kMaxBenchSide);
   auto frames = options.integer("frames", 1, kMaxFrames);
@@ -157,11 +153,7 @@ int runBench(std::span<const std::string> arguments) {
   if (!arguments.empty() && arguments.front() == "tessellation") return runTessellationBench(arguments.subspan(1));
   if (!arguments.empty() && arguments.front() == "serve") return runServeBench(arguments.subspan(1));
   CommandLine options = benchOptions();
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   bench::BenchOptions settings;
   auto size = options.size("size", kMaxBenchSide);
   auto frames = options.integer("frames", 1, kMaxFrames);

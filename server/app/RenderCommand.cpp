@@ -116,11 +116,7 @@ std::string describeFrame(const render::RenderedFrame& frame) {
 
 int runRender(std::span<const std::string> arguments) {
   CommandLine options = renderOptions();
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   auto size = options.size("size", kMaxFrameSide);
   auto time = options.number("time");
   if (!size) return fail(size.error());

@@ -10,14 +10,11 @@ namespace specula::app {
 
 int runScenes(std::span<const std::string> arguments) {
   CommandLine options("specula scenes", "Lists the built-in scenes (any of them works as --scene NAME).", {});
-  if (Status status = options.parse(arguments); !status) {
-    std::cerr << "specula scenes: " << status.error() << "\n";
+  auto fail = [](const std::string& message) {
+    std::cerr << "specula scenes: " << message << "\n";
     return 1;
-  }
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  };
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   for (std::string_view name : scene::builtinSceneNames()) {
     const scene::Scene scene = *scene::makeBuiltinScene(name);
     std::printf("%-14.*s %7zu vertices %7zu triangles %2zu mirrors  %.*s\n", static_cast<int>(name.size()), name.data(),

@@ -54,11 +54,7 @@ std::string number(double value, int decimals) {
 
 int runServeBench(std::span<const std::string> arguments) {
   CommandLine options = serveBenchOptions();
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   auto seconds = options.number("seconds");
   auto warmup = options.number("warmup");
   auto renderThreads = options.integer("render-threads", 1, 64);

@@ -62,11 +62,7 @@ int fail(const std::string& message) {
 
 int runServe(std::span<const std::string> arguments) {
   CommandLine options = serveOptions();
-  if (Status status = options.parse(arguments); !status) return fail(status.error());
-  if (options.helpRequested()) {
-    std::cout << options.help();
-    return 0;
-  }
+  if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   auto port = options.integer("port", 0, 65535);
   auto maxSessions = options.integer("max-sessions", 1, 4096);
   auto renderThreads = options.integer("render-threads", 1, 64);

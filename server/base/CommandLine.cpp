@@ -1,5 +1,7 @@
 #include "base/CommandLine.h"
 
+#include <iostream>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -56,6 +58,14 @@ Status CommandLine::parse(std::span<const std::string> arguments) {
     values_[name] = *value;
   }
   return {};
+}
+
+std::optional<int> CommandLine::parseOrExit(std::span<const std::string> arguments,
+                                            const std::function<int(const std::string&)>& fail) {
+  if (Status status = parse(arguments); !status) return fail(status.error());
+  if (!helpRequested_) return std::nullopt;
+  std::cout << help();
+  return 0;
 }
 
 std::string CommandLine::help() const {

@@ -2,6 +2,7 @@
 // Options of one subcommand: `--name value`, `--name=value` or a bare `--flag`. The same table
 // parses the arguments and prints --help, so the help cannot drift from what is accepted.
 #include <glm/glm.hpp>
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -25,6 +26,10 @@ class CommandLine {
 
   // Parses arguments after the subcommand. --help sets helpRequested() instead of failing.
   Status parse(std::span<const std::string> arguments);
+  // parse() as every command starts: after --help (printed to stdout) returns 0; after an error
+  // returns fail(error); else nullopt, and the command goes on.
+  std::optional<int> parseOrExit(std::span<const std::string> arguments,
+                                 const std::function<int(const std::string&)>& fail);
   bool helpRequested() const { return helpRequested_; }
   std::string help() const;
 

@@ -1,17 +1,14 @@
 #include "OrbitCamera.h"
 
+#include "CameraConversions.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace specula::client {
 
 namespace {
-glm::vec3 toGlm(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-void toProto(const glm::vec3& v, v1::Vec3* out) {
-  out->set_x(v.x);
-  out->set_y(v.y);
-  out->set_z(v.z);
-}
+using protocol::toGlm;
 constexpr float kMaxPitch = 1.55f;
 }  // namespace
 
@@ -48,11 +45,7 @@ void OrbitCamera::pan(float right, float upward) {
 
 v1::ClientMessage OrbitCamera::message(std::uint64_t sequence, double clientTimeMs) const {
   v1::ClientMessage message;
-  v1::CameraUpdate& camera = *message.mutable_camera();
-  toProto(eye(), camera.mutable_eye());
-  toProto(target, camera.mutable_target());
-  toProto(up, camera.mutable_up());
-  camera.set_fov_degrees(fovDegrees);
+  v1::CameraUpdate& camera = *message.mutable_camera() = protocol::cameraUpdate(eye(), target, up, fovDegrees);
   camera.set_sequence(sequence);
   camera.set_client_time_ms(clientTimeMs);
   return message;

@@ -78,8 +78,6 @@ struct SpeculaClient::State {
 SpeculaClient::SpeculaClient(std::unique_ptr<State> state) : state_(std::move(state)) {}
 SpeculaClient::~SpeculaClient() { close(); }
 
-net::Encoding SpeculaClient::encoding() const { return state_->encoding; }
-
 Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddress& address, net::Encoding encoding,
                                                               std::chrono::milliseconds timeout) {
   auto state = std::make_unique<State>();

@@ -35,7 +35,6 @@ class SpeculaClient {
                                                         std::chrono::milliseconds timeout = std::chrono::seconds(5));
   ~SpeculaClient();
 
-  net::Encoding encoding() const;
   Status send(const v1::ClientMessage& message);
   // Raw bytes as one WebSocket message (tests send garbage with it).
   Status sendRaw(const std::string& payload, bool text);

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <thread>
 
+#include "CameraConversions.h"
 #include "CameraPath.h"
 #include "ConnectionOptions.h"
 #include "LoadRun.h"
@@ -25,13 +26,7 @@ int fail(const std::string& message) {
 
 v1::ClientMessage cameraMessage(const client::PathKey& key, std::uint64_t sequence) {
   v1::ClientMessage message;
-  v1::CameraUpdate& camera = *message.mutable_camera();
-  for (auto [from, to] : {std::pair{key.eye, camera.mutable_eye()}, {key.target, camera.mutable_target()}, {key.up, camera.mutable_up()}}) {
-    to->set_x(from.x);
-    to->set_y(from.y);
-    to->set_z(from.z);
-  }
-  camera.set_fov_degrees(key.fovDegrees);
+  v1::CameraUpdate& camera = *message.mutable_camera() = protocol::cameraUpdate(key.eye, key.target, key.up, key.fovDegrees);
   camera.set_sequence(sequence);
   camera.set_client_time_ms(client::steadyMilliseconds());
   return message;

@@ -88,9 +88,7 @@ int runServe(std::span<const std::string> arguments) {
                         : std::getenv("SPECULA_TOKEN") ? std::getenv("SPECULA_TOKEN")
                                                        : "";
   serverOptions.webRoot = options.text("web-root");
-  if (!net::isLoopbackAddress(serverOptions.bindAddress) && serverOptions.token.empty())
-    return fail("refusing to serve on " + serverOptions.bindAddress +
-                " without a token: pass --token SECRET (or set SPECULA_TOKEN), or bind 127.0.0.1");
+  if (auto problem = net::bindProblem(serverOptions)) return fail(*problem);  // before the slow scene and GL setup
 
   auto scene = loadScene(options.text("scene"));
   if (!scene) return fail(scene.error());

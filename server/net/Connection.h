@@ -53,7 +53,6 @@ class ConnectionHandler {
 
 struct UpgradeRequest {
   Encoding encoding = Encoding::Json;
-  std::string remoteAddress;
 };
 
 // Turns accepted WebSocket connections into sessions.

@@ -26,11 +26,6 @@ void Histogram::observe(double value) {
   ++count_;
 }
 
-std::uint64_t Histogram::count() const {
-  std::lock_guard lock(mutex_);
-  return count_;
-}
-
 void Histogram::appendPrometheus(std::string& out, const std::string& name, const std::string& help) const {
   std::lock_guard lock(mutex_);
   out += "# HELP " + name + " " + help + "\n# TYPE " + name + " histogram\n";

@@ -14,7 +14,6 @@ class Histogram {
   void observe(double value);
   // `# HELP`, `# TYPE` and the cumulative `_bucket`, `_sum` and `_count` lines.
   void appendPrometheus(std::string& out, const std::string& name, const std::string& help) const;
-  std::uint64_t count() const;
 
  private:
   mutable std::mutex mutex_;

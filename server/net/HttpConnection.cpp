@@ -100,11 +100,7 @@ void HttpConnection::onRead(beast::error_code error, std::size_t) {
     if (auto chosen = chooseSubprotocol(standard(request[http::field::sec_websocket_protocol]))) {
       auto ws = std::make_shared<WebSocketConnection>(std::move(stream_), options_, acceptor_, registry_,
                                                       std::move(connectionToken_));
-      std::string remote;
-      beast::error_code ignored;
-      const auto endpoint = beast::get_lowest_layer(ws->lowestLayer()).socket().remote_endpoint(ignored);
-      if (!ignored) remote = endpoint.address().to_string();
-      ws->start(std::move(request), chosen->first, std::move(chosen->second), std::move(remote));
+      ws->start(std::move(request), chosen->first, std::move(chosen->second));
       return;
     }
   }

@@ -24,6 +24,13 @@ bool isLoopbackAddress(const std::string& address) {
   return !error && parsed.is_loopback();
 }
 
+std::optional<std::string> bindProblem(const ServerOptions& options) {
+  if (isLoopbackAddress(options.bindAddress) || !options.token.empty()) return std::nullopt;
+  return "refusing to serve on " + options.bindAddress +
+         " without a token: anyone who can reach it could use it. Pass --token SECRET (or set SPECULA_TOKEN; "
+         "clients add ?token=SECRET) or bind 127.0.0.1";
+}
+
 struct HttpServer::State {
   ServerOptions options;
   ConnectionAcceptor& acceptor;
@@ -59,10 +66,7 @@ HttpServer::~HttpServer() { shutdown(std::chrono::milliseconds(1000)); }
 
 Result<std::unique_ptr<HttpServer>> HttpServer::start(ServerOptions options, ConnectionAcceptor& acceptor,
                                                       int ioThreads) {
-  if (!isLoopbackAddress(options.bindAddress) && options.token.empty())
-    return Error{"refusing to serve on " + options.bindAddress +
-                 " without a token: anyone who can reach it could use it. Pass --token SECRET (clients add "
-                 "?token=SECRET) or bind 127.0.0.1"};
+  if (auto problem = bindProblem(options)) return Error{*problem};
   boost::system::error_code error;
   const std::string host = options.bindAddress == "localhost" ? "127.0.0.1" : options.bindAddress;
   const auto address = asio::ip::make_address(host, error);

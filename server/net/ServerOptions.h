@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace specula::net {
@@ -26,5 +27,7 @@ struct ServerOptions {
 
 // True for 127.0.0.0/8, ::1 and "localhost": the addresses that need no token.
 bool isLoopbackAddress(const std::string& address);
+// Why these options must not serve (a non-loopback bind without a token), or nullopt.
+std::optional<std::string> bindProblem(const ServerOptions& options);
 
 }  // namespace specula::net

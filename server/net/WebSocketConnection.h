@@ -25,9 +25,7 @@ class WebSocketConnection : public MessageSink, public std::enable_shared_from_t
   ~WebSocketConnection() override;
 
   // Completes the upgrade for `request` (already checked: path, token) answering `subprotocol`.
-  void start(Request request, Encoding encoding, std::string subprotocol, std::string remoteAddress);
-
-  boost::beast::tcp_stream& lowestLayer() { return boost::beast::get_lowest_layer(ws_); }
+  void start(Request request, Encoding encoding, std::string subprotocol);
 
   void sendControl(std::string payload) override;
   void sendFrame(std::string payload) override;

@@ -4,12 +4,16 @@
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 
+#include "CameraConversions.h"
 #include "ProtocolCodec.h"
 #include "session/SessionHub.h"
 
 namespace specula::session {
 
 namespace {
+
+using protocol::toGlm;
+using protocol::toProto;
 
 constexpr std::uint32_t kProtocolVersion = 1;
 constexpr float kMaxCoordinate = 1e7f;   // metres; beyond this float positions have no precision left
@@ -23,14 +27,6 @@ bool finiteWithin(const v1::Vec3& v, float bound) {
   for (float c : {v.x(), v.y(), v.z()})
     if (!std::isfinite(c) || std::abs(c) > bound) return false;
   return true;
-}
-glm::vec3 toGlm(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-v1::Vec3 toProto(const glm::vec3& v) {
-  v1::Vec3 out;
-  out.set_x(v.x);
-  out.set_y(v.y);
-  out.set_z(v.z);
-  return out;
 }
 double millisecondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double, std::milli>(to - from).count();
@@ -225,10 +221,7 @@ v1::Welcome Session::welcome(bool resumed, Clock::time_point now) const {
   limits.set_still_delay_ms(static_cast<double>(options.stillDelay.count()));
   const double sceneMs = state_.clock.sceneMs(now);
   const math::Camera camera = state_.camera ? *state_.camera : scene::ScenePose::at(scene, sceneMs / 1000.0).camera;
-  *out.mutable_camera()->mutable_eye() = toProto(camera.eye);
-  *out.mutable_camera()->mutable_target() = toProto(camera.target);
-  *out.mutable_camera()->mutable_up() = toProto(camera.up);
-  out.mutable_camera()->set_fov_degrees(camera.fovYDegrees);
+  *out.mutable_camera() = protocol::cameraUpdate(camera.eye, camera.target, camera.up, camera.fovYDegrees);
   *out.mutable_settings() = settingsToProto(state_.settings);
   out.set_playing(state_.clock.playing());
   out.set_scene_time_ms(sceneMs);
@@ -424,10 +417,7 @@ void Session::deliver(const FrameRequest& request, const RenderOutput& output, s
   *frame.mutable_tessellation() = output.tessellation;
   frame.set_jpeg(std::move(jpeg));
   const math::Camera& camera = request.job.pose.camera;
-  *frame.mutable_camera()->mutable_eye() = toProto(camera.eye);
-  *frame.mutable_camera()->mutable_target() = toProto(camera.target);
-  *frame.mutable_camera()->mutable_up() = toProto(camera.up);
-  frame.mutable_camera()->set_fov_degrees(camera.fovYDegrees);
+  *frame.mutable_camera() = protocol::cameraUpdate(camera.eye, camera.target, camera.up, camera.fovYDegrees);
   std::shared_ptr<net::MessageSink> sink;
   {
     std::lock_guard lock(mutex_);

@@ -30,9 +30,6 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
  public:
   Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, net::Encoding encoding);
 
-  const std::string& id() const { return id_; }
-  std::uint64_t number() const { return number_; }
-
   // net::ConnectionHandler
   void onMessage(std::string_view payload, bool text) override;
   void onOversizedMessage() override;

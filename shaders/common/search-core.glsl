@@ -213,6 +213,7 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
   bool warm = useSeed && objectiveAt(texel, 0) > kInvalid;
   if (warm) texel = climb(texel, 0, maxWalkSteps, steps, value);
   bool fromPyramid = !warm || steps >= maxWalkSteps;  // no seed, or the seed was too far
+  bool hiddenExactly = analytic != 0 && behindQuadric(eyePosition, vertexWorld);  // region C, decided once
   vec3 r, n;
   // At most two rounds, written as a loop so the pyramid search and the refinement are each
   // compiled once (this function is inlined into every search).
@@ -232,7 +233,7 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
     bool converged = refineOnQuadric(texelFetch(gbufferPosition, ivec3(texel, layer), 0).xyz, r, n);
     // A stale seed (the camera jumped) can stall the climb far from the answer, where the refinement
     // cannot reach it: search again from the pyramid. Hidden vertices have no answer to converge to.
-    if (converged || !retryWhenLost || (flags & kReflectionColdStart) != 0 || behindQuadric(eyePosition, vertexWorld)) break;
+    if (converged || !retryWhenLost || (flags & kReflectionColdStart) != 0 || hiddenExactly) break;
     fromPyramid = true;
     value = kInvalid;  // the stalled texel must not win against the pyramid's
   }
@@ -255,7 +256,7 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
     // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
     // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
     // which mirroring would magnify by about 2|V − R| at grazing reflection points.
-    bool hidden = analytic != 0 ? behindQuadric(eyePosition, vertexWorld) : dot(vertexWorld - r, n) < 0.0;
+    bool hidden = analytic != 0 ? hiddenExactly : dot(vertexWorld - r, n) < 0.0;
     if (hidden) {
       flags |= kReflectionHidden;
       vec3 silhouette, silhouetteNormal;

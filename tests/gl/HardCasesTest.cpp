@@ -45,6 +45,18 @@ std::vector<std::uint32_t> triples(std::size_t count) {
   return indices;
 }
 
+// Reflection results of the last frame with a NaN or Inf in their reflection point or virtual position.
+std::size_t nonFiniteResults(const render::Renderer& renderer) {
+  std::size_t count = 0;
+  for (const passes::ReflectedVertex& result : renderer.readReflectedVertices())
+    for (int axis = 0; axis < 4; ++axis)
+      if (!std::isfinite(result.virtualPosition[axis]) || !std::isfinite(result.reflectionPoint[axis])) {
+        ++count;
+        break;
+      }
+  return count;
+}
+
 struct Outcome {
   std::size_t slots = 0, nonFinite = 0;
   bench::ReflectionPointErrors errors;
@@ -60,14 +72,8 @@ Outcome renderAndMeasure(render::Renderer& renderer, const math::Camera& camera,
   auto frame = renderer.render(pose, width, height, settings);
   EXPECT_TRUE(frame) << (frame ? "" : frame.error());
   if (!frame) return out;
-  for (const passes::ReflectedVertex& result : renderer.readReflectedVertices()) {
-    ++out.slots;
-    for (int axis = 0; axis < 4; ++axis)
-      if (!std::isfinite(result.virtualPosition[axis]) || !std::isfinite(result.reflectionPoint[axis])) {
-        ++out.nonFinite;
-        break;
-      }
-  }
+  out.slots = renderer.readReflectedVertices().size();
+  out.nonFinite = nonFiniteResults(renderer);
   for (std::size_t i = 0; i < frame->rgba.size(); i += 4) EXPECT_EQ(frame->rgba[i + 3], 255u) << "an undefined pixel";
   out.errors = bench::measureReflectionPoints(renderer, pose, *frame);
   return out;
@@ -285,11 +291,7 @@ TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
     auto frame = (*renderer)->render(pose, 320, 240);
     ASSERT_TRUE(frame) << frame.error();
     EXPECT_GT(frame->search.searched, 0u) << "t=" << t;
-    std::size_t nonFinite = 0;
-    for (const passes::ReflectedVertex& result : (*renderer)->readReflectedVertices())
-      for (int axis = 0; axis < 4; ++axis)
-        nonFinite += !std::isfinite(result.virtualPosition[axis]) || !std::isfinite(result.reflectionPoint[axis]);
-    EXPECT_EQ(nonFinite, 0u) << "t=" << t;
+    EXPECT_EQ(nonFiniteResults(**renderer), 0u) << "t=" << t;
   }
 }
 

@@ -14,6 +14,7 @@
 #include <random>
 #include <thread>
 
+#include "CameraConversions.h"
 #include "SpeculaClient.h"
 #include "net/HttpServer.h"
 #include "scene/builtin/BuiltinScenes.h"
@@ -135,13 +136,8 @@ inline v1::ClientMessage helloMessage(std::uint32_t width = 64, std::uint32_t he
 
 inline v1::ClientMessage cameraMessage(glm::vec3 eye, std::uint64_t sequence) {
   v1::ClientMessage message;
-  v1::CameraUpdate& camera = *message.mutable_camera();
-  camera.mutable_eye()->set_x(eye.x);
-  camera.mutable_eye()->set_y(eye.y);
-  camera.mutable_eye()->set_z(eye.z);
-  camera.mutable_target();
-  camera.mutable_up()->set_y(1.0f);
-  camera.set_fov_degrees(45.0f);
+  v1::CameraUpdate& camera = *message.mutable_camera() =
+      protocol::cameraUpdate(eye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), 45.0f);
   camera.set_sequence(sequence);
   camera.set_client_time_ms(client::steadyMilliseconds());
   return message;

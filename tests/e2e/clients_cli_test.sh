@@ -59,6 +59,22 @@ check "its window showed the scene, not a blank" test "$(stat -c %s "$work/view.
 "$bin/specula-view" --url "ws://127.0.0.1:1" >"$work/vdown.out" 2>&1
 check "specula-view says when the server is unreachable" bash -c "grep -q 'cannot connect to 127.0.0.1:1' '$work/vdown.out'"
 
+# Garbage options are refused by name before anything connects.
+tool_fails_with() {  # tool_fails_with DESCRIPTION EXPECTED-TEXT TOOL ARGS...
+  local description="$1" expected="$2" tool="$3"; shift 3
+  local output
+  if output=$("$bin/$tool" "$@" 2>&1); then check "$description (exited 0)" false
+  else check "$description" grep -qF -- "$expected" <<<"$output"; fi
+}
+tool_fails_with "specula-load refuses zero sessions" "--sessions expects an integer in [1, 1024]" specula-load --sessions 0
+tool_fails_with "specula-load refuses a bad size" "--size expects WIDTHxHEIGHT" specula-load --size big
+tool_fails_with "specula-load refuses a bad encoding" "--encoding expects proto or json, got 'xml'" specula-load --encoding xml
+tool_fails_with "specula-load refuses a bad URL" "the port must be a number" specula-load --url ws://127.0.0.1:99999
+tool_fails_with "specula-path needs a path" "--path FILE is required" specula-path
+tool_fails_with "specula-path refuses a bad pace" "--pace expects frames or realtime" specula-path --path "$work/path.json" --pace fast
+tool_fails_with "specula-view refuses a bad frame count" "--frames expects an integer" specula-view --frames -1
+tool_fails_with "unknown options are named" "unknown option --colour" specula-view --colour red
+
 for tool in specula-path specula-load specula-view; do
   check "$tool --help tells what it does" bash -c "'$bin/$tool' --help | grep -q -- '--url'"
 done

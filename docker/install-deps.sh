@@ -8,6 +8,7 @@ set -euo pipefail
 runtime_packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6   # headless GL: EGL (device/surfaceless) and OSMesa
   libglfw3 libturbojpeg0 libprotobuf32 libembree3-3  # clients, JPEG, protocol, reference ray tracer
+  gnuplot-nox                                        # specula bench accuracy draws its error/time plot
   ca-certificates
 )
 build_packages=(

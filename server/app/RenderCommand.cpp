@@ -9,7 +9,7 @@
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
-#include "app/TessellationOptions.h"
+#include "app/ReflectionOptions.h"
 #include "encode/JpegEncoder.h"
 #include "encode/PngEncoder.h"
 #include "reference/RayTracer.h"
@@ -32,19 +32,19 @@ CommandLine renderOptions() {
       {"up", "x,y,z", "camera up direction", ""},
       {"fov", "DEG", "vertical field of view in degrees", ""},
       {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
-      {"method", "METHOD", "search | raytrace | none", "search"},
-      {"margin", "SHARE", "G-buffer border per side as a share of the frame (search)", "0.1"},
+      {"method", "METHOD", "search | environment-map | raytrace | none", "search"},
   };
-  for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
+  for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
   specs.push_back(glOption());
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|raytrace|none] [--tessellation MODE --metric METRIC --threshold X --level N] "
-      "[--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] "
+      "[--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
+      "environment-map = the usual engine shortcut, a cube map from each mirror's centre (GL; no parallax);\n"
       "raytrace = the exact reference (Embree, CPU); none = mirrors in their own colour only (GL).",
       std::move(specs));
 }
@@ -134,12 +134,13 @@ int runRender(std::span<const std::string> arguments) {
   if (Status status = overrideCamera(options, pose.camera); !status) return fail(status.error());
 
   const std::string method = options.text("method");
-  if (method != "search" && method != "raytrace" && method != "none")
-    return fail("--method expects search, raytrace or none, got '" + method + "'");
-  auto margin = options.number("margin");
-  if (!margin || *margin < 0.0 || *margin > 1.0) return fail("--margin expects a share in [0, 1], got '" + options.text("margin") + "'");
-  auto tessellation = parseTessellationOptions(options);
-  if (!tessellation) return fail(tessellation.error());
+  if (method != "search" && method != "environment-map" && method != "raytrace" && method != "none")
+    return fail("--method expects search, environment-map, raytrace or none, got '" + method + "'");
+  auto settings = parseReflectionOptions(options);
+  if (!settings) return fail(settings.error());
+  settings->method = method == "none"              ? passes::ReflectionMethod::None
+                     : method == "environment-map" ? passes::ReflectionMethod::EnvironmentMap
+                                                   : passes::ReflectionMethod::Search;
 
   std::vector<std::uint8_t> rgba;
   std::string timings;
@@ -156,11 +157,7 @@ int runRender(std::span<const std::string> arguments) {
     if (!context) return fail(context.error());
     auto renderer = render::Renderer::create(**context, *scene);
     if (!renderer) return fail(renderer.error());
-    passes::ReflectionSettings settings;
-    settings.method = method == "none" ? passes::ReflectionMethod::None : passes::ReflectionMethod::Search;
-    settings.gbufferMargin = static_cast<float>(*margin);
-    settings.tessellation = *tessellation;
-    auto frame = (*renderer)->render(pose, size->first, size->second, settings);
+    auto frame = (*renderer)->render(pose, size->first, size->second, *settings);
     if (!frame) return fail(frame.error());
     rgba = std::move(frame->rgba);
     timings = describeFrame(*frame);

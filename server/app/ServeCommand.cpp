@@ -11,7 +11,7 @@
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
-#include "app/TessellationOptions.h"
+#include "app/ReflectionOptions.h"
 #include "app/Service.h"
 
 namespace specula::app {

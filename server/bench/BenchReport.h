@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 
+#include "bench/AccuracyBenchmark.h"
 #include "bench/SceneBenchmark.h"
 #include "bench/TessellationBenchmark.h"
 
@@ -20,5 +21,17 @@ std::string formatJson(std::span<const SceneBenchResult> results);
 std::string formatTessellationTable(std::span<const TessellationBenchRow> rows);
 std::string formatTessellationCsv(std::span<const TessellationBenchRow> rows);
 std::string formatTessellationJson(std::span<const TessellationBenchRow> rows);
+
+// `specula bench accuracy`: one row per setting; JSON as {"settings": [...]}; a Markdown table
+// under `heading` (Pareto rows in bold).
+std::string formatAccuracyCsv(std::span<const AccuracyRow> rows);
+std::string formatAccuracyJson(std::span<const AccuracyRow> rows);
+std::string formatAccuracyMarkdown(std::span<const AccuracyRow> rows, const std::string& heading);
+
+// A self-contained gnuplot script (data inline) that draws mirror mismatch against frame time, both
+// log scales, every setting labelled, the Pareto front as a line and the ray tracer's time as a
+// vertical line; it writes `pngFile` and `svgFile` relative to gnuplot's working folder.
+std::string accuracyPlotScript(std::span<const AccuracyRow> rows, const std::string& title, const std::string& pngFile,
+                               const std::string& svgFile);
 
 }  // namespace specula::bench

@@ -12,8 +12,13 @@ namespace specula::bench {
 namespace {
 constexpr int kAdaptiveLevel = 5;
 
-// Triangles the virtual-objects pass draws without tessellation: every reflected object's, per mirror drawn.
-std::uint32_t reflectedTriangles(const render::Renderer& renderer, const render::RenderedFrame& frame) {
+bool isFull(const passes::TessellationSettings& s, int level) {
+  return s.mode != passes::TessellationMode::None && s.threshold == 0.0f && s.maxLevel == level;
+}
+}  // namespace
+
+std::uint32_t virtualTrianglesDrawn(const render::Renderer& renderer, const render::RenderedFrame& frame) {
+  if (!frame.tessellation.trianglesPerRound.empty()) return frame.tessellation.finishedTriangles;
   std::size_t triangles = 0;
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
     if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror.mirrorObject) == frame.drawnMirrors.end()) continue;
@@ -22,11 +27,6 @@ std::uint32_t reflectedTriangles(const render::Renderer& renderer, const render:
   }
   return static_cast<std::uint32_t>(triangles);
 }
-
-bool isFull(const passes::TessellationSettings& s, int level) {
-  return s.mode != passes::TessellationMode::None && s.threshold == 0.0f && s.maxLevel == level;
-}
-}  // namespace
 
 std::vector<passes::TessellationSettings> tessellationSweep() {
   using passes::TessellationMetric;
@@ -75,7 +75,7 @@ Result<std::vector<TessellationBenchRow>> benchmarkTessellation(
     row.frameMilliseconds = median(frameTimes);
     row.tessellationMilliseconds = median(tessellationTimes);
     const passes::TessellationStatistics& t = last.tessellation;
-    row.triangles = t.trianglesPerRound.empty() ? reflectedTriangles(**renderer, last) : t.finishedTriangles;
+    row.triangles = virtualTrianglesDrawn(**renderer, last);
     row.midpointSearches = t.midpointSearches.searched;
     row.searches = last.search.searched + t.midpointSearches.searched;
     row.capped = t.capped;

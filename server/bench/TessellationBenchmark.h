@@ -10,6 +10,7 @@
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "passes/ReflectionSettings.h"
+#include "render/Renderer.h"
 #include "scene/Scene.h"
 
 namespace specula::bench {
@@ -36,6 +37,10 @@ struct TessellationBenchRow {
 // the angle metric at 0.1 … 0.001 and the pixel metric at 2, 1, 0.5 px (level 5), plus 0.25 and
 // 0.1 px, finer than asked, to find where adaptive reaches full level 4.
 std::vector<passes::TessellationSettings> tessellationSweep();
+
+// Virtual triangles the last frame drew: the tessellated ones, or every reflected object's per mirror
+// drawn when it was not tessellated.
+std::uint32_t virtualTrianglesDrawn(const render::Renderer& renderer, const render::RenderedFrame& frame);
 
 // Measures every setting on `scene`; `progress` hears about each one before it runs.
 Result<std::vector<TessellationBenchRow>> benchmarkTessellation(

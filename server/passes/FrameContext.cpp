@@ -18,7 +18,7 @@ std::size_t FrameContext::searchMesh(std::size_t mirrorObject) const {
 }
 
 glm::mat4 FrameContext::gbufferWorldToClip() const {
-  return view.worldToClip(glm::vec2(reflections.size()) / glm::vec2(target.width(), target.height()));
+  return view.worldToClip(glm::vec2(reflections.coveredPixels()) / glm::vec2(target.width(), target.height()));
 }
 
 void FrameContext::setReflectedObject(const gl::ShaderProgram& program, const ReflectionSlotRange& range) const {

@@ -32,6 +32,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds
     if (!mirror.reflected.empty() && boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f))
       plan.mirrors.push_back(&mirror);
   if (plan.mirrors.empty()) return plan;
+  if (settings.method == ReflectionMethod::EnvironmentMap) {
+    plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "environment-map"});
+    return plan;
+  }
   plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "gbuffer-pyramid", "search"});
   plan.tessellate = settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back("tessellation");

@@ -11,9 +11,11 @@ constexpr int kGroupSide = 8;  // local_size of gbuffer-pyramid.comp
 }  // namespace
 
 Result<std::unique_ptr<GBufferPyramidPass>> GBufferPyramidPass::create(const gl::GlApi& gl) {
-  auto program = gl::ShaderProgram::build(gl, {"gbuffer-pyramid/gbuffer-pyramid.comp"});
-  if (!program) return Error{program.error()};
-  return std::unique_ptr<GBufferPyramidPass>(new GBufferPyramidPass(std::move(program.value())));
+  auto full = gl::ShaderProgram::build(gl, {"gbuffer-pyramid/gbuffer-pyramid.comp"});
+  if (!full) return Error{full.error()};
+  auto half = gl::ShaderProgram::build(gl, {"gbuffer-pyramid/gbuffer-pyramid-half.comp"});
+  if (!half) return Error{half.error()};
+  return std::unique_ptr<GBufferPyramidPass>(new GBufferPyramidPass(std::move(full.value()), std::move(half.value())));
 }
 
 std::span<const std::string_view> GBufferPyramidPass::reads() const { return kReads; }
@@ -22,25 +24,27 @@ std::span<const std::string_view> GBufferPyramidPass::writes() const { return kW
 void GBufferPyramidPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   ReflectionResources& resources = frame.reflections;
-  program_.use();
+  const gl::ShaderProgram& program = resources.precision() == GBufferPrecision::Float16 ? half_ : full_;
+  const GLenum format = resources.textureFormat();
+  program.use();
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     const TexelRect changed = resources.changedRect(mirror->layer);
     if (changed.empty()) continue;
-    program_.set("layer", mirror->layer);
+    program.set("layer", mirror->layer);
     for (int level = 1; level <= resources.coarseLevel(); ++level) {
-      gl.BindImageTexture(0, resources.positionTexture(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-      gl.BindImageTexture(1, resources.normalTexture(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-      gl.BindImageTexture(2, resources.positionTexture(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-      gl.BindImageTexture(3, resources.normalTexture(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      gl.BindImageTexture(0, resources.positionTexture(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
+      gl.BindImageTexture(1, resources.normalTexture(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
+      gl.BindImageTexture(2, resources.positionTexture(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
+      gl.BindImageTexture(3, resources.normalTexture(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
       const glm::ivec2 coarserSize = resources.levelSize(level);
       const glm::ivec2 low = glm::clamp(changed.low >> level, glm::ivec2(0), coarserSize);
       const glm::ivec2 high = glm::clamp(((changed.high - 1) >> level) + 1, glm::ivec2(0), coarserSize);
       const glm::ivec2 extent = high - low;
       if (extent.x <= 0 || extent.y <= 0) break;
-      program_.set("origin", low);
-      program_.set("finerSize", resources.levelSize(level - 1));
-      program_.set("coarserSize", coarserSize);
+      program.set("origin", low);
+      program.set("finerSize", resources.levelSize(level - 1));
+      program.set("coarserSize", coarserSize);
       gl.DispatchCompute(static_cast<GLuint>((extent.x + kGroupSide - 1) / kGroupSide),
                          static_cast<GLuint>((extent.y + kGroupSide - 1) / kGroupSide), 1);
       gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

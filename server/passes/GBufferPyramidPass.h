@@ -19,8 +19,8 @@ class GBufferPyramidPass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  explicit GBufferPyramidPass(gl::ShaderProgram program) : program_(std::move(program)) {}
-  gl::ShaderProgram program_;
+  GBufferPyramidPass(gl::ShaderProgram full, gl::ShaderProgram half) : full_(std::move(full)), half_(std::move(half)) {}
+  gl::ShaderProgram full_, half_;  // for RGBA32F and RGBA16F G-buffers: image formats must match
 };
 
 }  // namespace specula::passes

@@ -25,9 +25,11 @@ ReflectionResources::ReflectionResources(const gl::GlApi& gl, const ReflectionSl
   changed_.resize(slots.mirrors.size());
 }
 
-Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 margin) {
-  const glm::ivec2 size(frameWidth + 2 * margin.x, frameHeight + 2 * margin.y);
-  if (size == size_ && margin == margin_) return {};
+Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 margin, float texelsPerPixel,
+                                    GBufferPrecision precision) {
+  const glm::ivec2 covered(frameWidth + 2 * margin.x, frameHeight + 2 * margin.y);
+  const glm::ivec2 size = glm::max(glm::ivec2(glm::round(glm::vec2(covered) * texelsPerPixel)), glm::ivec2(1));
+  if (size == size_ && covered == coveredPixels_ && margin == margin_ && precision == precision_) return {};
   const GLsizei layers = static_cast<GLsizei>(std::max<std::size_t>(slots_.mirrors.size(), 1));
   GLint maxSize = 0;
   gl_->GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -36,6 +38,9 @@ Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 
                  " texels exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) + "; lower the size or the margin"};
   size_ = size;
   margin_ = margin;
+  coveredPixels_ = covered;
+  texelsPerPixel_ = static_cast<float>(size.x) / static_cast<float>(covered.x);
+  precision_ = precision;
   coarseLevel_ = 0;
   while (std::max(levelSize(coarseLevel_).x, levelSize(coarseLevel_).y) > kCoarsestSide) ++coarseLevel_;
   // Textures are immutable once sized: replace them.
@@ -44,7 +49,7 @@ Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 
   depth_ = gl::GlTexture(*gl_);
   for (const gl::GlTexture* texture : {&position_, &normal_}) {
     gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
-    gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, coarseLevel_ + 1, GL_RGBA32F, size.x, size.y, layers);
+    gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, coarseLevel_ + 1, textureFormat(), size.x, size.y, layers);
     gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }

@@ -9,6 +9,7 @@
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
 #include "passes/ReflectedVertex.h"
+#include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
 #include "passes/TessellationBuffers.h"
 
@@ -27,13 +28,19 @@ class ReflectionResources {
 
   ReflectionResources(const gl::GlApi& gl, const ReflectionSlots& slots);
 
-  // Sizes the G-buffer for a width × height frame with `margin` texels added on each side;
-  // reallocates (and forgets every texel) only when the size changes.
-  Status prepare(int frameWidth, int frameHeight, glm::ivec2 margin);
+  // Sizes the G-buffer for a width × height frame with `margin` pixels added on each side, at
+  // `texelsPerPixel` texels per pixel and `precision`; reallocates (and forgets every texel) only
+  // when one of them changes.
+  Status prepare(int frameWidth, int frameHeight, glm::ivec2 margin, float texelsPerPixel, GBufferPrecision precision);
 
   const ReflectionSlots& slots() const { return slots_; }
   glm::ivec2 size() const { return size_; }
-  glm::ivec2 margin() const { return margin_; }
+  glm::ivec2 margin() const { return margin_; }  // frame pixels added on each side
+  // The widened frame (frame + 2 × margin, in pixels) the G-buffer covers, at its resolution.
+  glm::ivec2 coveredPixels() const { return coveredPixels_; }
+  float texelsPerPixel() const { return texelsPerPixel_; }
+  GBufferPrecision precision() const { return precision_; }
+  GLenum textureFormat() const { return precision_ == GBufferPrecision::Float16 ? GL_RGBA16F : GL_RGBA32F; }
   int coarseLevel() const { return coarseLevel_; }
   glm::ivec2 levelSize(int level) const { return glm::max(size_ >> level, glm::ivec2(1)); }
   GLuint positionTexture() const { return position_.id(); }
@@ -58,7 +65,9 @@ class ReflectionResources {
  private:
   const gl::GlApi* gl_;
   const ReflectionSlots& slots_;
-  glm::ivec2 size_{0}, margin_{0};
+  glm::ivec2 size_{0}, margin_{0}, coveredPixels_{0};
+  float texelsPerPixel_ = 1.0f;
+  GBufferPrecision precision_ = GBufferPrecision::Float32;
   int coarseLevel_ = 0;
   gl::GlTexture position_, normal_, depth_;
   gl::GlFramebuffer framebuffer_;

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 
 namespace specula::passes {
@@ -6,6 +7,15 @@ namespace specula::passes {
 enum class ReflectionMethod {
   None,    // mirrors drawn with their own colour only
   Search,  // virtual objects from the screen-space reflection-point search (Estalella et al. 2006)
+  // The baseline most engines use instead: a cube map rendered from each mirror's centre, looked up
+  // with the reflected eye ray. Exact only for surroundings infinitely far away (no parallax).
+  EnvironmentMap,
+};
+
+// Storage of the mirror G-buffer's world positions and normals.
+enum class GBufferPrecision {
+  Float32,  // RGBA32F
+  Float16,  // RGBA16F: half the memory and bandwidth; positions keep 11 bits of mantissa
 };
 
 // Adaptive tessellation of reflected geometry (Szabo 2013, ch. 4), so virtual edges curve.
@@ -35,10 +45,17 @@ struct ReflectionSettings {
   // Extra G-buffer border on each side, as a share of the frame size, so reflection points of a
   // mirror just off-screen still have texels.
   float gbufferMargin = 0.1f;
+  // G-buffer texels per frame pixel along each axis (1: one texel per pixel), in [1/8, 4].
+  float gbufferScale = 1.0f;
+  GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;
+  int environmentMapSize = 256;  // cube face side in texels (EnvironmentMap), in [8, 2048]
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb
   TessellationSettings tessellation;
 };
+
+// What is out of range in `settings`, naming the setting and its range; nullopt when all is well.
+std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& settings);
 
 }  // namespace specula::passes

@@ -49,10 +49,11 @@ void TessellationPass::execute(const FrameContext& frame) {
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     split_.use();
     setSearchMirror(split_, frame, *mirror);
-    // The G-buffer is the frame widened by the margin at one texel per pixel.
+    // The G-buffer is the frame widened by the margin, at texelsPerPixel texels per pixel.
     const TexelRect& covered = frame.reflections.coveredRect(mirror->layer);
     const glm::vec2 margin(frame.reflections.margin());
-    split_.set("mirrorRect", glm::vec4(glm::vec2(covered.low) - margin, glm::vec2(covered.high) - margin));
+    const float perPixel = frame.reflections.texelsPerPixel();
+    split_.set("mirrorRect", glm::vec4(glm::vec2(covered.low) / perPixel - margin, glm::vec2(covered.high) / perPixel - margin));
     tessellateMirror(frame, *mirror);
   }
   gl.Disable(GL_RASTERIZER_DISCARD);

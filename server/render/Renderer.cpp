@@ -7,6 +7,7 @@
 #include "gl/GlObject.h"
 #include "gl/RenderTarget.h"
 #include "math/Camera.h"
+#include "passes/EnvironmentMapPass.h"
 #include "passes/FramePlan.h"
 #include "passes/GBufferPyramidPass.h"
 #include "passes/MirrorGBufferPass.h"
@@ -62,7 +63,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
                         addPass(renderer->passes_, passes::SearchPass::create(gl)),
                         addPass(renderer->passes_, passes::TessellationPass::create(gl)),
-                        addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl))})
+                        addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl)),
+                        addPass(renderer->passes_, passes::EnvironmentMapPass::create(gl))})
     if (!status) return Error{status.error()};
   return renderer;
 }
@@ -82,8 +84,7 @@ passes::FrameView Renderer::frameView(const math::Camera& camera, const std::vec
 Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, int height,
                                        const passes::ReflectionSettings& settings) {
   if (auto problem = math::cameraProblem(pose.camera)) return Error{"cannot render: " + *problem};
-  if (!(settings.gbufferMargin >= 0.0f && settings.gbufferMargin <= 1.0f))
-    return Error{"G-buffer margin must lie in [0, 1]"};
+  if (auto problem = passes::reflectionSettingsProblem(settings)) return Error{"cannot render: " + *problem};
   const Clock::time_point start = Clock::now();
   const gl::GlApi& gl = context_.api();
   auto target = gl::RenderTarget::create(gl, width, height);
@@ -99,7 +100,8 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
-    if (Status status = reflections_.prepare(width, height, margin); !status) return Error{status.error()};
+    if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, settings.gbufferPrecision); !status)
+      return Error{status.error()};
   }
   const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, view, plan, settings, target.value(), reflections_};
 

@@ -78,3 +78,73 @@ TEST(BenchReport, TableShowsDashesWhereNothingWasMeasured) {
   EXPECT_NE(table.find("| -  "), std::string::npos) << table;
   EXPECT_NE(table.find("passes (median ms): scene 5.00 search 2.50"), std::string::npos) << table;
 }
+
+namespace {
+
+bench::AccuracyRow accuracy(const std::string& setting, double milliseconds, double mismatch) {
+  bench::AccuracyRow row{"scene", setting, "search"};
+  row.frameMilliseconds = milliseconds;
+  row.mirrorMismatch = mismatch;
+  return row;
+}
+
+bool onFront(const std::vector<bench::AccuracyRow>& rows, const std::string& setting) {
+  return std::find_if(rows.begin(), rows.end(), [&](const auto& row) { return row.setting == setting; })->pareto;
+}
+
+}  // namespace
+
+TEST(AccuracyReport, TheParetoFrontHoldsExactlyTheUndominatedSettings) {
+  bench::AccuracyRow reference = accuracy("reference", 1.0, 0.0);  // fastest and exact, yet not a setting
+  reference.reference = true;
+  std::vector<bench::AccuracyRow> rows = {reference,
+                                          accuracy("fast coarse", 10.0, 0.2),
+                                          accuracy("slow fine", 100.0, 0.01),
+                                          accuracy("middle", 30.0, 0.05),
+                                          accuracy("dominated", 40.0, 0.06),     // middle is faster and finer
+                                          accuracy("tie in time", 30.0, 0.07),   // as fast as middle, coarser
+                                          accuracy("same as middle", 30.0, 0.05)};  // equal: neither dominates
+  bench::markParetoFront(rows);
+  EXPECT_FALSE(onFront(rows, "reference"));
+  EXPECT_TRUE(onFront(rows, "fast coarse"));
+  EXPECT_TRUE(onFront(rows, "slow fine"));
+  EXPECT_TRUE(onFront(rows, "middle"));
+  EXPECT_TRUE(onFront(rows, "same as middle"));
+  EXPECT_FALSE(onFront(rows, "dominated"));
+  EXPECT_FALSE(onFront(rows, "tie in time"));
+}
+
+TEST(AccuracyReport, CsvMarkdownAndPlotCarryEverySettingAndMarkTheFront) {
+  bench::AccuracyRow reference = accuracy("ray-traced reference", 250.0, 0.0);
+  reference.reference = true;
+  bench::AccuracyRow search = accuracy("search, no tessellation", 12.5, 0.125);
+  search.pointErrorP99 = 0.004;
+  search.pointErrorMax = 0.25;
+  search.reflectionVertices = 1536;
+  std::vector<bench::AccuracyRow> rows = {reference, search, accuracy("full level 4", 80.0, 0.0)};
+  bench::markParetoFront(rows);
+
+  const auto csv = lines(bench::formatAccuracyCsv(rows));
+  ASSERT_EQ(csv.size(), 4u);
+  EXPECT_EQ(csv[0].rfind("scene,setting,family,frame_ms_median,", 0), 0u) << csv[0];
+  EXPECT_NE(csv[2].find(R"("search, no tessellation",search,12.50,)"), std::string::npos) << csv[2];
+  EXPECT_NE(csv[2].find(",0.004,0.25,1536,"), std::string::npos) << csv[2];
+  EXPECT_EQ(csv[1].substr(csv[1].size() - 6), ",false") << "the reference is never on the front";
+
+  const std::string markdown = bench::formatAccuracyMarkdown(rows, "### scene");
+  EXPECT_NE(markdown.find("| **search, no tessellation** | 12.5 |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| ray-traced reference | 250.0 |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| 0.004 / 0.25 |"), std::string::npos) << markdown;
+
+  const std::string plot = bench::accuracyPlotScript(rows, "a \"quoted\" title", "out.png", "out.svg");
+  EXPECT_NE(plot.find(R"(set title "a \"quoted\" title")"), std::string::npos) << plot;
+  EXPECT_NE(plot.find(R"("search, no tessellation")"), std::string::npos);
+  EXPECT_NE(plot.find("title 'Pareto front'"), std::string::npos);
+  EXPECT_NE(plot.find("set arrow 1 from 250.000, graph 0"), std::string::npos) << "the reference's time as a vertical line";
+  EXPECT_NE(plot.find("set output \"out.png\""), std::string::npos);
+  EXPECT_NE(plot.find("set output \"out.svg\""), std::string::npos);
+  // The exact setting sits on the floor of the log axis instead of vanishing at 0.
+  EXPECT_NE(plot.find("80.000 0.000100 "), std::string::npos) << plot;
+  const std::string frontBlock = plot.substr(plot.find("$front << EOD"));
+  EXPECT_LT(frontBlock.find("12.500 "), frontBlock.find("80.000 ")) << "the front is drawn in order of time";
+}

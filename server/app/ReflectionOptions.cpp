@@ -1,4 +1,4 @@
-#include "app/TessellationOptions.h"
+#include "app/ReflectionOptions.h"
 
 #include <cstdio>
 
@@ -46,6 +46,41 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
   auto level = options.integer("level", 0, kMaxLevel);
   if (!level) return Error{level.error()};
   settings.maxLevel = *level;
+  return settings;
+}
+
+std::vector<OptionSpec> reflectionOptions() {
+  const passes::ReflectionSettings defaults;
+  std::vector<OptionSpec> specs = {
+      {"margin", "SHARE", "G-buffer border per side as a share of the frame", "0.1"},
+      {"gbuffer-scale", "X", "G-buffer texels per frame pixel along each axis, 0.125 to 4", "1"},
+      {"gbuffer-precision", "BITS", "G-buffer float bits: 32 (RGBA32F) or 16 (RGBA16F)", "32"},
+      {"environment-size", "N", "cube face side in texels (environment-map), 8 to 2048",
+       std::to_string(defaults.environmentMapSize)},
+  };
+  for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
+  return specs;
+}
+
+Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& options) {
+  passes::ReflectionSettings settings;
+  auto margin = options.number("margin");
+  if (!margin || *margin < 0.0 || *margin > 1.0) return Error{"--margin expects a share in [0, 1], got '" + options.text("margin") + "'"};
+  settings.gbufferMargin = static_cast<float>(*margin);
+  auto scale = options.number("gbuffer-scale");
+  if (!scale || *scale < 0.125 || *scale > 4.0)
+    return Error{"--gbuffer-scale expects texels per pixel from 0.125 to 4, got '" + options.text("gbuffer-scale") + "'"};
+  settings.gbufferScale = static_cast<float>(*scale);
+  const std::string precision = options.text("gbuffer-precision");
+  if (precision == "32") settings.gbufferPrecision = passes::GBufferPrecision::Float32;
+  else if (precision == "16") settings.gbufferPrecision = passes::GBufferPrecision::Float16;
+  else return Error{"--gbuffer-precision expects 32 or 16 (bits per channel), got '" + precision + "'"};
+  auto faceSize = options.integer("environment-size", 8, 2048);
+  if (!faceSize) return Error{faceSize.error()};
+  settings.environmentMapSize = *faceSize;
+  auto tessellation = parseTessellationOptions(options);
+  if (!tessellation) return Error{tessellation.error()};
+  settings.tessellation = *tessellation;
   return settings;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The adaptive-tessellation options, the same for every command that renders virtual objects.
+// The reflection options, the same for every command that renders virtual objects.
 #include <string>
 #include <vector>
 
@@ -14,5 +14,11 @@ std::vector<OptionSpec> tessellationOptions();
 
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
+
+// The tessellation options plus --margin, --gbuffer-scale, --gbuffer-precision and --environment-size.
+std::vector<OptionSpec> reflectionOptions();
+
+// Reads them all (the method stays the default: each command names its own methods).
+Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& options);
 
 }  // namespace specula::app

@@ -1,0 +1,183 @@
+#include "bench/AccuracyBenchmark.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "bench/ImageComparison.h"
+#include "bench/ReflectionAccuracy.h"
+#include "bench/TessellationBenchmark.h"
+#include "reference/RayTracer.h"
+#include "render/Renderer.h"
+#include "scene/ScenePose.h"
+
+namespace specula::bench {
+
+namespace {
+
+using passes::ReflectionMethod;
+using passes::TessellationMetric;
+using passes::TessellationMode;
+
+AccuracySetting withTessellation(std::string name, std::string family, passes::TessellationSettings tessellation) {
+  AccuracySetting setting{std::move(name), std::move(family), {}};
+  setting.settings.tessellation = tessellation;
+  return setting;
+}
+
+// Pose `index` of the path: the scene's animation at its share of `seconds`, the camera swung
+// about its up axis through the target by its share of the orbit (centred on the scene's camera).
+scene::ScenePose pathPose(const scene::Scene& scene, const AccuracyBenchOptions& options, int index) {
+  const double share = options.poses > 1 ? static_cast<double>(index) / (options.poses - 1) : 0.5;
+  scene::ScenePose pose = scene::ScenePose::at(scene, share * options.seconds);
+  math::Camera& camera = pose.camera;
+  const float angle = static_cast<float>(glm::radians((share - 0.5) * options.orbitDegrees));
+  const glm::mat4 swing = glm::rotate(glm::mat4(1.0f), angle, glm::normalize(camera.up));
+  camera.eye = camera.target + glm::vec3(swing * glm::vec4(camera.eye - camera.target, 0.0f));
+  return pose;
+}
+
+// Triangles the reflection draws: the virtual ones, or the reflected objects into six cube faces.
+std::uint64_t reflectionTriangles(const render::Renderer& renderer, const render::RenderedFrame& frame,
+                                  ReflectionMethod method) {
+  if (method == ReflectionMethod::Search) return virtualTrianglesDrawn(renderer, frame);
+  if (method != ReflectionMethod::EnvironmentMap) return 0;
+  constexpr std::uint64_t kCubeFaces = 6;
+  return kCubeFaces * virtualTrianglesDrawn(renderer, frame);  // untessellated: each reflected triangle once per face
+}
+
+std::uint64_t medianOf(std::vector<std::uint64_t> values) {
+  std::vector<double> asDouble(values.begin(), values.end());
+  return static_cast<std::uint64_t>(median(std::move(asDouble)));
+}
+
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double value : values) sum += value;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
+}  // namespace
+
+std::vector<AccuracySetting> accuracySweep() {
+  std::vector<AccuracySetting> sweep;
+  for (int faceSize : {256, 1024}) {
+    AccuracySetting setting{"environment map " + std::to_string(faceSize) + " px", "environment map", {}};
+    setting.settings.method = ReflectionMethod::EnvironmentMap;
+    setting.settings.environmentMapSize = faceSize;
+    sweep.push_back(setting);
+  }
+  sweep.push_back(withTessellation("search, no tessellation", "search", {TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0}));
+  for (float pixels : {2.0f, 1.0f, 0.5f, 0.25f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "adaptive %g px", pixels);
+    sweep.push_back(withTessellation(name, "adaptive", {TessellationMode::CrackFree, TessellationMetric::Pixels, pixels, 4}));
+  }
+  for (float angle : {0.01f, 0.003f, 0.001f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "adaptive angle %g", angle);
+    sweep.push_back(withTessellation(name, "adaptive", {TessellationMode::CrackFree, TessellationMetric::Angle, angle, 5}));
+  }
+  for (int level = 1; level <= 4; ++level)
+    sweep.push_back(withTessellation("full level " + std::to_string(level), "full",
+                                     {TessellationMode::CrackFree, TessellationMetric::Pixels, 0.0f, level}));
+  for (float scale : {0.5f, 2.0f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "G-buffer x%g", scale);
+    AccuracySetting setting{name, "G-buffer", {}};
+    setting.settings.gbufferScale = scale;
+    sweep.push_back(setting);
+  }
+  AccuracySetting half{"G-buffer RGBA16F", "G-buffer", {}};
+  half.settings.gbufferPrecision = passes::GBufferPrecision::Float16;
+  sweep.push_back(half);
+  return sweep;
+}
+
+Result<std::vector<AccuracyRow>> benchmarkAccuracy(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene,
+                                                   const AccuracyBenchOptions& options,
+                                                   const std::vector<AccuracySetting>& sweep,
+                                                   const std::function<void(const std::string& step)>& progress) {
+  if (options.poses < 1) return Error{"the camera path needs at least one pose"};
+  std::vector<scene::ScenePose> path;
+  for (int i = 0; i < options.poses; ++i) path.push_back(pathPose(*scene, options, i));
+
+  // One reference per pose, shared by every setting: the ray tracer is the slow part.
+  auto tracer = reference::RayTracer::create(scene);
+  if (!tracer) return Error{tracer.error()};
+  std::vector<reference::ReferenceImage> truths;
+  std::vector<double> traceTimes;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    progress("ray-traced reference, pose " + std::to_string(i + 1) + "/" + std::to_string(path.size()));
+    auto truth = (*tracer)->render(path[i], {options.width, options.height, 1, 0});
+    if (!truth) return Error{truth.error()};
+    traceTimes.push_back(truth->milliseconds);
+    truths.push_back(std::move(*truth));
+  }
+  std::vector<AccuracyRow> rows;
+  AccuracyRow reference{scene->name, "ray-traced reference", "reference"};
+  reference.reference = true;
+  reference.frameMilliseconds = median(traceTimes);
+  reference.psnr = 100.0;  // the PSNR ceiling compareWithReference reports for identical images
+  reference.ssim = 1.0;
+  rows.push_back(reference);
+
+  auto renderer = render::Renderer::create(context, scene);
+  if (!renderer) return Error{renderer.error()};
+  render::Renderer& r = **renderer;
+  const bool measurePoints = hasAnalyticSphereMirror(*scene);
+  for (const AccuracySetting& setting : sweep) {
+    progress(setting.name);
+    const ReflectionMethod method = setting.settings.method;
+    // Warm-up at the first pose: buffer sizes, shader caches, coherence seeds.
+    if (auto warm = r.render(path.front(), options.width, options.height, setting.settings); !warm)
+      return Error{setting.name + ": " + warm.error()};
+    std::vector<double> times, psnrs, ssims, mismatches;
+    std::vector<std::uint64_t> drawn, searched;
+    ReflectionPointErrors points;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      auto frame = r.render(path[i], options.width, options.height, setting.settings);
+      if (!frame) return Error{setting.name + ": " + frame.error()};
+      times.push_back(frame->timings.totalMilliseconds);
+      auto comparison = compareWithReference(*frame, truths[i]);
+      if (!comparison) return Error{setting.name + ": " + comparison.error()};
+      psnrs.push_back(comparison->psnr);
+      ssims.push_back(comparison->ssim);
+      mismatches.push_back(comparison->mirrorMismatch);
+      drawn.push_back(3 * reflectionTriangles(r, *frame, method));
+      searched.push_back(frame->search.searched + frame->tessellation.midpointSearches.searched);
+      if (measurePoints && method == ReflectionMethod::Search) {
+        ReflectionPointErrors errors = measureReflectionPoints(r, path[i], *frame);
+        points.pixels.insert(points.pixels.end(), errors.pixels.begin(), errors.pixels.end());
+      }
+    }
+    AccuracyRow row{scene->name, setting.name, setting.family};
+    row.frameMilliseconds = median(times);
+    row.psnr = mean(psnrs);
+    row.ssim = mean(ssims);
+    row.mirrorMismatch = mean(mismatches);
+    if (!points.pixels.empty()) {
+      row.pointErrorP99 = points.percentile(0.99);
+      row.pointErrorMax = points.percentile(1.0);
+    }
+    row.reflectionVertices = medianOf(drawn);
+    row.searches = static_cast<std::uint32_t>(medianOf(searched));
+    rows.push_back(std::move(row));
+  }
+  markParetoFront(rows);
+  return rows;
+}
+
+void markParetoFront(std::vector<AccuracyRow>& rows) {
+  const auto dominates = [](const AccuracyRow& a, const AccuracyRow& b) {
+    return a.frameMilliseconds <= b.frameMilliseconds && a.mirrorMismatch <= b.mirrorMismatch &&
+           (a.frameMilliseconds < b.frameMilliseconds || a.mirrorMismatch < b.mirrorMismatch);
+  };
+  for (AccuracyRow& row : rows) {
+    row.pareto = !row.reference && std::none_of(rows.begin(), rows.end(), [&](const AccuracyRow& other) {
+      return !other.reference && dominates(other, row);
+    });
+  }
+}
+
+}  // namespace specula::bench

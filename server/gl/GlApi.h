@@ -12,6 +12,8 @@ namespace specula::gl {
   X(PFNGLGETSTRINGPROC, GetString)                                                                 \
   X(PFNGLGETSTRINGIPROC, GetStringi)                                                               \
   X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                             \
+  X(PFNGLGETINTEGER64VPROC, GetInteger64v)                                                         \
+  X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                                         \
   X(PFNGLGETERRORPROC, GetError)                                                                   \
   X(PFNGLVIEWPORTPROC, Viewport)                                                                   \
   X(PFNGLCLEARPROC, Clear)                                                                         \

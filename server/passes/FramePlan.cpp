@@ -1,5 +1,6 @@
 #include "passes/FramePlan.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace specula::passes {
@@ -23,6 +24,14 @@ bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, flo
   return !outside(local.x, tanX) && !outside(local.y, tanY);
 }
 
+bool halfFloatsResolve(const math::Bounds& mirrorBounds) {
+  // A half float's spacing is 2^-10 of its magnitude at worst; 2^-10 * 8 radii ~ radius / 128.
+  constexpr float kReachInRadii = 8.0f;
+  const glm::vec3 centre = mirrorBounds.center();
+  const float largest = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)}) + mirrorBounds.radius();
+  return largest <= kReachInRadii * mirrorBounds.radius();
+}
+
 FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds>& worldBounds,
                     const math::Camera& camera, float aspect, const ReflectionSettings& settings) {
   FramePlan plan;
@@ -32,6 +41,9 @@ FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds
     if (!mirror.reflected.empty() && boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f))
       plan.mirrors.push_back(&mirror);
   if (plan.mirrors.empty()) return plan;
+  plan.gbufferPrecision = settings.gbufferPrecision;
+  for (const MirrorSlots* mirror : plan.mirrors)
+    if (!halfFloatsResolve(worldBounds[mirror->mirrorObject])) plan.gbufferPrecision = GBufferPrecision::Float32;
   if (settings.method == ReflectionMethod::EnvironmentMap) {
     plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "environment-map"});
     return plan;

@@ -15,7 +15,9 @@ enum class ReflectionMethod {
 // Storage of the mirror G-buffer's world positions and normals.
 enum class GBufferPrecision {
   Float32,  // RGBA32F
-  Float16,  // RGBA16F: half the memory and bandwidth; positions keep 11 bits of mantissa
+  // RGBA16F: half the memory and bandwidth; positions keep 11 bits of mantissa, so frames whose
+  // mirrors lie far from the origin use RGBA32F instead (passes::halfFloatsResolve).
+  Float16,
 };
 
 // Adaptive tessellation of reflected geometry (Szabo 2013, ch. 4), so virtual edges curve.

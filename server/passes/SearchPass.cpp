@@ -3,6 +3,7 @@
 #include <array>
 
 #include "passes/QuadricUniforms.h"
+#include "passes/ReflectedVertex.h"
 
 namespace specula::passes {
 
@@ -38,6 +39,32 @@ void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& fra
 void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame, const MirrorSlots& mirror) {
   program.set("layer", mirror.layer);
   setMirrorQuadric(program, *frame.scene.objects[mirror.mirrorObject].mirror, frame.pose.objectToWorld[mirror.mirrorObject]);
+}
+
+std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots) {
+  GLint64 maxStorageBytes = 0;
+  GLint maxGroups = 0;
+  gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxStorageBytes);
+  gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
+  const auto mebibytes = [](std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; };
+  const std::string limit = "this GL allows " + mebibytes(static_cast<std::uint64_t>(maxStorageBytes)) +
+                            " of shader storage per buffer and " + std::to_string(maxGroups) + " work groups per dispatch";
+  const std::uint64_t slotBytes = std::uint64_t{slots.slotCount} * sizeof(ReflectedVertex);
+  if (slotBytes > static_cast<std::uint64_t>(maxStorageBytes))
+    return "scene '" + scene.name + "' needs " + std::to_string(slots.slotCount) + " reflection slots (" + mebibytes(slotBytes) +
+           ", mirrors × reflected vertices); " + limit + ": set \"reflected\": false on objects no mirror needs to show, "
+           "or use fewer mirrors or a GPU with larger limits";
+  for (const MirrorSlots& mirror : slots.mirrors)
+    for (const ReflectionSlotRange& range : mirror.reflected) {
+      const scene::Mesh& mesh = scene.meshes[scene.objects[range.object].mesh];
+      const std::uint64_t bytes = mesh.vertices.size() * sizeof(scene::Vertex);
+      const std::uint64_t groups = (mesh.vertices.size() + kGroupSize - 1) / kGroupSize;
+      if (bytes > static_cast<std::uint64_t>(maxStorageBytes) || groups > static_cast<std::uint64_t>(maxGroups))
+        return "mesh '" + mesh.name + "' of scene '" + scene.name + "' has " + std::to_string(mesh.vertices.size()) +
+               " vertices (" + mebibytes(bytes) + ", " + std::to_string(groups) + " work groups) to search; " + limit +
+               ": split the mesh, set \"reflected\": false on its object, or use a GPU with larger limits";
+    }
+  return std::nullopt;
 }
 
 void SearchPass::execute(const FrameContext& frame) {

@@ -1,6 +1,8 @@
 #pragma once
 // Finds every reflected vertex's reflection point in each visible mirror (shaders/search).
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "base/Result.h"
 #include "gl/ShaderProgram.h"
@@ -11,6 +13,10 @@ namespace specula::passes {
 // The uniforms of shaders/common/search-core.glsl: per frame, then per mirror.
 void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame);
 void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame, const MirrorSlots& mirror);
+
+// What in `scene` this GL cannot search, naming the limit and the fix: the slot buffer and each
+// reflected mesh's vertex buffer are bound whole as shader storage, and one dispatch covers a mesh.
+std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots);
 
 class SearchPass final : public Pass {
  public:

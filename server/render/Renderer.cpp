@@ -40,11 +40,11 @@ Status addPass(std::map<std::string_view, std::unique_ptr<passes::Pass>, std::le
 
 }  // namespace
 
-Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene)
+Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots)
     : context_(context),
       scene_(std::move(scene)),
       meshes_(context.api(), scene_->meshes),
-      slots_(passes::ReflectionSlots::forScene(*scene_)),
+      slots_(std::move(slots)),
       reflections_(context.api(), slots_) {
   for (const scene::Mesh& mesh : scene_->meshes) {
     math::Bounds bounds;
@@ -56,8 +56,11 @@ Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> s
 Renderer::~Renderer() = default;
 
 Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene) {
-  std::unique_ptr<Renderer> renderer(new Renderer(context, std::move(scene)));
   const gl::GlApi& gl = context.api();
+  passes::ReflectionSlots slots = passes::ReflectionSlots::forScene(*scene);
+  // Before any buffer exists: past these limits the search would read and write out of range.
+  if (auto problem = passes::searchLimitProblem(gl, *scene, slots)) return Error{*problem};
+  std::unique_ptr<Renderer> renderer(new Renderer(context, std::move(scene), std::move(slots)));
   for (Status status : {addPass(renderer->passes_, passes::ScenePass::create(gl)),
                         addPass(renderer->passes_, passes::MirrorGBufferPass::create(gl)),
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
@@ -100,7 +103,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
-    if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, settings.gbufferPrecision); !status)
+    if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, plan.gbufferPrecision); !status)
       return Error{status.error()};
   }
   const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, view, plan, settings, target.value(), reflections_};
@@ -113,7 +116,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     passes_.find(plan.passes[i])->second->execute(frame);
     gl.QueryCounter(stamps[i + 1].id(), GL_TIMESTAMP);
   }
-  RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view, {}};
+  RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision};
   for (const passes::MirrorSlots* mirror : plan.mirrors) result.drawnMirrors.push_back(mirror->mirrorObject);
   gl.QueryCounter(stamps.back().id(), GL_TIMESTAMP);
   if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();

@@ -31,6 +31,8 @@ struct RenderedFrame {
   passes::SearchStatistics search;  // zero when no mirror was visible
   passes::FrameView view;           // the camera matrices used (for measuring in pixels)
   passes::TessellationStatistics tessellation;  // empty when the frame was not tessellated
+  // What the G-buffer used: RGBA16F falls back to RGBA32F for mirrors far from the origin.
+  passes::GBufferPrecision gbufferPrecision = passes::GBufferPrecision::Float32;
 };
 
 class Renderer {
@@ -51,7 +53,7 @@ class Renderer {
   const scene::Scene& scene() const { return *scene_; }
 
  private:
-  Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene);
+  Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots);
   passes::FrameView frameView(const math::Camera& camera, const std::vector<math::Bounds>& worldBounds,
                               float aspect) const;
 

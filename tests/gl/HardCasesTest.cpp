@@ -59,6 +59,7 @@ std::size_t nonFiniteResults(const render::Renderer& renderer) {
 
 struct Outcome {
   std::size_t slots = 0, nonFinite = 0;
+  passes::GBufferPrecision precision = passes::GBufferPrecision::Float32;  // what the frame's G-buffer used
   bench::ReflectionPointErrors errors;
 };
 
@@ -73,6 +74,7 @@ Outcome renderAndMeasure(render::Renderer& renderer, const math::Camera& camera,
   EXPECT_TRUE(frame) << (frame ? "" : frame.error());
   if (!frame) return out;
   out.slots = renderer.readReflectedVertices().size();
+  out.precision = frame->gbufferPrecision;
   out.nonFinite = nonFiniteResults(renderer);
   for (std::size_t i = 0; i < frame->rgba.size(); i += 4) EXPECT_EQ(frame->rgba[i + 3], 255u) << "an undefined pixel";
   out.errors = bench::measureReflectionPoints(renderer, pose, *frame);
@@ -149,6 +151,11 @@ std::vector<HardCase> hardCases() {
       {"mirror_half_off_screen", origin, shell, lookAt(eyeZ, {1.8f, 0.0f, 0.0f}, 40.0f), 0.05},
       {"mirror_a_few_pixels", origin, shell, lookAt({0.0f, 0.0f, 400.0f}, origin, 40.0f), 0.05},
       {"mirror_fills_the_screen", origin, shell, lookAt({0.0f, 0.0f, 1.5f}, origin, 40.0f), 0.05},
+      // Triangles whose corners fall on different sides: reflected in front, hidden behind the
+      // sphere, and at the horizon between; tessellation splits the edges that cross over.
+      {"triangles_across_the_horizon", origin,
+       {{1.6f, 0.2f, 0.8f}, {0.0f, 0.3f, -1.8f}, {-1.6f, -0.2f, 0.8f}, {1.2f, 0.0f, 0.0f}, {0.0f, 1.5f, -0.1f}, {-0.5f, 0.0f, -2.5f}},
+       standard, 0.05},
   };
 }
 
@@ -225,6 +232,103 @@ TEST(HardCasesGeometry, ACameraTeleportStartsFromStaleSeedsAndStillConverges) {
   }
 }
 
+// RGBA16F keeps 11 bits of each G-buffer position: the search starts from coarser texels, and the
+// error grows with the mirror's distance from the origin in radii (at 1.4e3 radii, 30 px before the
+// fallback). Within 8 radii the refinement on the exact quadric makes it as exact as RGBA32F
+// (printed side by side); beyond, the frame falls back to RGBA32F by itself.
+TEST(HardCasesGeometry, AnRgba16fGBufferStaysNearRgba32fWithTheErrorQuantified) {
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  const std::vector<glm::vec3> shell = concat({ring({0, 1, 0}, 0.0f, 2.0f, 48), ring({1, 0, 0}, 0.3f, 2.5f, 48),
+                                               ring({0, 0, 1}, -2.0f, 1.5f, 24)});
+  struct Placement {
+    glm::vec3 centre;
+    bool halfFloatsKept;
+    double maxHalfErrorPixels;
+  };
+  for (const Placement& placed : {Placement{glm::vec3(0.0f), true, 0.01}, Placement{{4.0f, -2.0f, 4.0f}, true, 0.01},
+                                  Placement{{1000.0f, -300.0f, 1000.0f}, false, 0.1}, Placement{{1e4f, 0.0f, -1e4f}, false, 0.1}}) {
+    auto renderer = render::Renderer::create(*gl, sphereAndObject(placed.centre, shell, triples(shell.size())));
+    ASSERT_TRUE(renderer) << renderer.error();
+    double worst[2] = {0.0, 0.0};
+    for (auto precision : {passes::GBufferPrecision::Float32, passes::GBufferPrecision::Float16}) {
+      passes::ReflectionSettings settings;
+      settings.gbufferPrecision = precision;
+      settings.coherence = false;  // every vertex climbs the pyramid from scratch
+      const math::Camera camera = lookAt(placed.centre + glm::vec3(0.5f, 1.0f, 5.0f), placed.centre, 40.0f);
+      const Outcome outcome = renderAndMeasure(**renderer, camera, 320, 240, settings);
+      EXPECT_EQ(outcome.nonFinite, 0u);
+      ASSERT_GT(outcome.errors.pixels.size(), shell.size() / 2);
+      const bool half = precision == passes::GBufferPrecision::Float16;
+      if (half) {
+        EXPECT_EQ(outcome.precision == passes::GBufferPrecision::Float16, placed.halfFloatsKept) << glm::length(placed.centre);
+      }
+      worst[half] = outcome.errors.percentile(1.0);
+      std::printf("G-buffer %s (used %s) at |centre| %.0f: reflection-point error p50 %.2g px, p99 %.2g px, max %.2g px\n",
+                  half ? "RGBA16F" : "RGBA32F", outcome.precision == passes::GBufferPrecision::Float16 ? "RGBA16F" : "RGBA32F",
+                  glm::length(placed.centre), outcome.errors.percentile(0.5), outcome.errors.percentile(0.99), worst[half]);
+    }
+    EXPECT_LE(worst[0], 0.1) << "RGBA32F at |centre| " << glm::length(placed.centre);
+    EXPECT_LE(worst[1], placed.maxHalfErrorPixels) << "RGBA16F at |centre| " << glm::length(placed.centre);
+  }
+}
+
+// `mirrors` sphere mirrors in a row along x, all reflecting one object of `vertexCount` vertices that
+// sit on a ring around the first mirror (only the first few form triangles: the search visits every vertex).
+std::shared_ptr<const scene::Scene> mirrorsAndManyVertices(int mirrors, std::size_t vertexCount) {
+  scene::Scene scene;
+  scene.name = "near-the-limits";
+  scene.lights.push_back(sunLight({1.0f, 2.0f, 1.0f}, 1.0f));
+  const std::uint32_t sphereMesh = addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 24, 12));
+  const std::uint32_t mirrorMaterial = addMaterial(scene, perfectMirror("mirror"));
+  for (int m = 0; m < mirrors; ++m) {
+    const std::uint32_t sphere = addSphereMirror(scene, "mirror" + std::to_string(m), sphereMesh, mirrorMaterial, 1.0f,
+                                                 placed({3.0f * static_cast<float>(m), 0.0f, 0.0f}));
+    scene.objects[sphere].reflected = false;
+  }
+  scene::Mesh mesh;
+  mesh.name = "many-vertices";
+  for (std::size_t i = 0; i < vertexCount; ++i) {
+    const float angle = 6.2831853f * static_cast<float>(i) / static_cast<float>(vertexCount);
+    mesh.vertices.push_back({{2.0f * std::cos(angle), 0.5f, 2.0f * std::sin(angle)}, {0.0f, 1.0f, 0.0f}, glm::vec2(0.0f)});
+  }
+  mesh.indices = {0, 1, 2};
+  addObject(scene, "ring", addMesh(scene, std::move(mesh)), addMaterial(scene, matte("grey", 0x808080)), placed(glm::vec3(0.0f)));
+  return std::make_shared<const scene::Scene>(std::move(scene));
+}
+
+// The slot buffer (mirrors × reflected vertices × 64 bytes) is bound whole as shader storage: past
+// the GL's limit the search would write out of range, so the renderer refuses the scene by name.
+// Just under it (one mirror, 2^20 + 1 vertices: 64 MiB, half the least any GL 4.3 allows) it
+// renders and the last slot is as exact as the first.
+TEST(HardCasesGeometry, VertexCountsNearTheGpuBufferLimitsRenderOrFailByName) {
+  auto gl = context();
+  ASSERT_TRUE(gl);
+  GLint64 maxStorageBytes = 0;
+  gl->api().GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxStorageBytes);
+  ASSERT_GE(maxStorageBytes, GLint64{1} << 27) << "GL 4.3 guarantees 128 MiB";
+  constexpr std::size_t kVertices = (std::size_t{1} << 20) + 1;
+  const auto slotBytes = static_cast<GLint64>(kVertices * sizeof(passes::ReflectedVertex));
+  const int tooManyMirrors = static_cast<int>(maxStorageBytes / slotBytes) + 1;
+  ASSERT_LE(tooManyMirrors, 256) << "a GL with more than 16 GiB per buffer: this test would need more mirrors";
+
+  auto refused = render::Renderer::create(*gl, mirrorsAndManyVertices(tooManyMirrors, kVertices));
+  ASSERT_FALSE(refused) << tooManyMirrors << " mirrors x " << kVertices << " vertices exceed the limit";
+  EXPECT_NE(refused.error().find("reflection slots"), std::string::npos) << refused.error();
+  EXPECT_NE(refused.error().find("\"reflected\": false"), std::string::npos) << "the error names the fix: " << refused.error();
+
+  auto renderer = render::Renderer::create(*gl, mirrorsAndManyVertices(1, kVertices));
+  ASSERT_TRUE(renderer) << renderer.error();
+  passes::ReflectionSettings settings;
+  settings.tessellation.mode = passes::TessellationMode::None;
+  const Outcome outcome = renderAndMeasure(**renderer, lookAt({0.0f, 3.0f, 5.0f}, glm::vec3(0.0f), 45.0f), 160, 120, settings);
+  EXPECT_EQ(outcome.slots, kVertices);
+  EXPECT_EQ(outcome.nonFinite, 0u);
+  ASSERT_GT(outcome.errors.pixels.size(), kVertices / 4) << "most of the ring is visible in the mirror";
+  EXPECT_EQ(outcome.errors.vertices.back().slot, kVertices - 1) << "the last slot is measured too";
+  EXPECT_LE(outcome.errors.percentile(1.0), 0.05);
+}
+
 // 200 random eyes × 500 random vertices = 10^5 (mirror, eye, vertex) configurations.
 TEST(HardCasesRandomized, AHundredThousandConfigurationsAgreeWithTheExactSolver) {
   auto gl = context();
@@ -293,6 +397,14 @@ TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
     EXPECT_GT(frame->search.searched, 0u) << "t=" << t;
     EXPECT_EQ(nonFiniteResults(**renderer), 0u) << "t=" << t;
   }
+  // Edge-on: the eye in the plane of the rim (0.86 m up), so the concave inside is seen at 0°.
+  scene::ScenePose edgeOn = scene::ScenePose::at((*renderer)->scene(), 0.0);
+  edgeOn.camera = lookAt({0.7f, 0.86f, 0.7f}, {0.0f, 0.86f, 0.0f}, 30.0f);
+  auto frame = (*renderer)->render(edgeOn, 320, 240);
+  ASSERT_TRUE(frame) << frame.error();
+  EXPECT_FALSE(frame->drawnMirrors.empty()) << "the bowl is in view edge-on";
+  EXPECT_EQ(nonFiniteResults(**renderer), 0u) << "edge-on";
+  for (std::size_t i = 3; i < frame->rgba.size(); i += 4) ASSERT_EQ(frame->rgba[i], 255u) << "an undefined pixel edge-on";
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "passes/FramePlan.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
@@ -116,4 +118,43 @@ TEST(FrustumTest, BoxJustOutsideTheWidenedSideIsCulledAndInsideIsKept) {
   EXPECT_FALSE(passes::boundsInFrustum(box({6.0f, 0.0f, -5.0f}), camera, 1.0f, 0.0f)) << "beyond the 45° side";
   EXPECT_TRUE(passes::boundsInFrustum(box({5.0f, 0.0f, -5.0f}), camera, 1.0f, 0.0f)) << "straddles the side";
   EXPECT_FALSE(passes::boundsInFrustum(math::Bounds{}, camera, 1.0f, 0.0f)) << "empty";
+}
+
+TEST(FramePlan, TheEnvironmentMapBaselineRunsNoSearchPyramidOrTessellation) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  passes::ReflectionSettings settings;
+  settings.method = passes::ReflectionMethod::EnvironmentMap;
+  const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings);
+  EXPECT_EQ(plan.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "environment-map"}));
+  EXPECT_FALSE(plan.tessellate);
+  EXPECT_EQ(plan.mirrors.size(), 1u);
+}
+
+TEST(FramePlan, HalfFloatGBuffersAreKeptOnlyForMirrorsNearTheOrigin) {
+  const auto sphere = [](const glm::vec3& centre, float radius) {
+    math::Bounds bounds;
+    bounds.add(centre - glm::vec3(radius));
+    bounds.add(centre + glm::vec3(radius));
+    return bounds;
+  };
+  EXPECT_TRUE(passes::halfFloatsResolve(sphere(glm::vec3(0.0f), 1.0f)));
+  EXPECT_TRUE(passes::halfFloatsResolve(sphere({3.0f, 0.0f, 0.0f}, 1.0f)));
+  EXPECT_FALSE(passes::halfFloatsResolve(sphere({1000.0f, 0.0f, 0.0f}, 1.0f)));
+  EXPECT_TRUE(passes::halfFloatsResolve(sphere({1000.0f, 0.0f, 0.0f}, 200.0f))) << "what counts is the distance in radii";
+
+  scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  passes::ReflectionSettings settings;
+  settings.gbufferPrecision = passes::GBufferPrecision::Float16;
+  EXPECT_EQ(passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings).gbufferPrecision,
+            passes::GBufferPrecision::Float16);
+  const glm::vec3 far(5000.0f, 0.0f, 0.0f);  // the whole scene and camera moved away from the origin
+  for (glm::mat4& objectToWorld : pose.objectToWorld) objectToWorld = glm::translate(glm::mat4(1.0f), far) * objectToWorld;
+  pose.camera.eye += far;
+  pose.camera.target += far;
+  EXPECT_EQ(passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings).gbufferPrecision,
+            passes::GBufferPrecision::Float32);
 }

@@ -246,13 +246,13 @@ std::string accuracyPlotScript(std::span<const AccuracyRow> rows, const std::str
   for (std::size_t i = 0; i < points.size(); ++i) {
     Point& p = points[i];
     p.labelY = p.y;
-    for (bool moved = true; moved;) {
-      moved = false;
-      for (std::size_t j = 0; j < i; ++j)
-        if (std::abs(points[j].x - p.x) < kLabelWidth && std::abs(points[j].labelY - p.labelY) < kLabelHeight) {
-          p.labelY = points[j].labelY - kLabelHeight;
-          moved = true;
-        }
+    // Each move goes strictly lower (by a little more than a label, so rounding cannot undo it): at most i moves.
+    for (std::size_t moves = 0; moves <= i; ++moves) {
+      const auto clash = std::find_if(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(i), [&](const Point& q) {
+        return std::abs(q.x - p.x) < kLabelWidth && std::abs(q.labelY - p.labelY) < kLabelHeight;
+      });
+      if (clash == points.begin() + static_cast<std::ptrdiff_t>(i)) break;
+      p.labelY = clash->labelY - 1.001 * kLabelHeight;
     }
   }
   double minX = std::log10(std::max(referenceMilliseconds, 1e-3)), maxX = minX, minY = points.front().labelY, maxY = minY;

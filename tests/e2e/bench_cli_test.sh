@@ -58,4 +58,38 @@ check "bench tessellation --help tells what it sweeps" bash -c "'$specula' bench
 fails_with "bench tessellation checks its options" "--frames expects an integer" bench tessellation --frames 0
 fails_with "bench tessellation names a bad time" "--time expects a finite number, got 'soon'" bench tessellation --time soon
 fails_with "bench tessellation checks its outputs before work" "could not write '$work/no/dir/t.csv'" bench tessellation --scenes quad --csv "$work/no/dir/t.csv"
+
+# bench accuracy: every setting of the sweep plus the reference, in every format, with a real plot.
+output=$("$specula" bench accuracy --scene quad --size 128x96 --poses 2 --out "$work/acc" 2>"$work/aprogress.txt")
+check "bench accuracy succeeds" test $? -eq 0
+check "bench accuracy reports progress per reference pose and setting" bash -c \
+  "grep -q 'bench accuracy quad \[1/19\] ray-traced reference, pose 1/2' '$work/aprogress.txt' && grep -q '\[19/19\] G-buffer RGBA16F' '$work/aprogress.txt'"
+check "its CSV has a header, the reference and 17 settings" test "$(wc -l <"$work/acc/accuracy.csv")" -eq 19
+acolumns=$(head -1 "$work/acc/accuracy.csv" | tr ',' '\n' | wc -l)
+check "every accuracy CSV row has the header's columns (names with commas quoted)" \
+  bash -c "sed 's/\"[^\"]*\"/name/g' '$work/acc/accuracy.csv' | awk -F, -v n=$acolumns 'NF != n { exit 1 }'"
+avalue() { sed 's/"[^"]*"/quoted/g' "$work/acc/accuracy.csv" | awk -F, -v setting="$1" -v column="$2" \
+  'NR == 1 { for (i = 1; i <= NF; i++) at[$i] = i } $2 == setting { print $at[column] }'; }
+check "full level 4 is closer to the reference than the environment map" \
+  awk -v a="$(avalue 'full level 4' mirror_mismatch)" -v b="$(avalue 'environment map 256 px' mirror_mismatch)" 'BEGIN { exit !(a < b) }'
+check "the quad's analytic sphere gets a reflection-point error" awk -v e="$(avalue 'full level 4' point_error_p99_px)" 'BEGIN { exit !(e != "" && e < 1) }'
+check "the environment map has no reflection points to measure" test -z "$(avalue 'environment map 256 px' point_error_p99_px)"
+check "some setting is on the Pareto front" grep -q ',true$' "$work/acc/accuracy.csv"
+check "the reference is never on it" grep -q '^quad,ray-traced reference,reference,.*,false$' "$work/acc/accuracy.csv"
+check "the Markdown table is printed and written" bash -c "grep -q '^| ray-traced reference |' <<<'$output' && grep -q '^| setting | frame ms |' '$work/acc/accuracy.md'"
+check "the JSON lists the settings" grep -q '"setting": "adaptive 0.5 px"' "$work/acc/accuracy.json"
+check "the PNG is a PNG" bash -c "head -c 8 '$work/acc/accuracy.png' | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a'"
+check "the SVG is an SVG with the Pareto front" bash -c "grep -q '<svg' '$work/acc/accuracy.svg' && grep -q 'Pareto front' '$work/acc/accuracy.svg'"
+check "the gnuplot script redraws the plot" bash -c "cd '$work/acc' && rm accuracy.png && gnuplot accuracy.gp && test -s accuracy.png"
+nognuplot=$(PATH=/nonexistent "$specula" bench accuracy --scene quad --out "$work/acc2" 2>&1)
+check "without gnuplot bench accuracy fails" test $? -ne 0
+check "... naming the package and --no-plot" bash -c "grep -q 'apt-get install gnuplot-nox' <<<'$nognuplot' && grep -q -- '--no-plot' <<<'$nognuplot'"
+check "without gnuplot it fails before rendering" bash -c "! grep -q 'bench accuracy quad' <<<'$nognuplot'"
+PATH=/nonexistent "$specula" bench accuracy --scene quad --size 64x48 --poses 1 --no-plot --out "$work/acc4" >/dev/null 2>&1
+check "--no-plot works without gnuplot and still writes the script" bash -c "test -s '$work/acc4/accuracy.csv' && test -s '$work/acc4/accuracy.gp' && test ! -e '$work/acc4/accuracy.png'"
+fails_with "bench accuracy names a bad orbit" "--orbit expects degrees from 0 to 180" bench accuracy --orbit 500
+fails_with "bench accuracy names a bad pose count" "--poses expects an integer" bench accuracy --poses 0
+fails_with "bench accuracy names an unknown scene" "neither a built-in scene" bench accuracy --scene nope --out "$work/acc5"
+fails_with "bench accuracy names an output folder it cannot create" "could not create the output folder" bench accuracy --out /proc/nope
+check "bench accuracy --help tells what it sweeps and writes" bash -c "'$specula' bench accuracy --help | grep -q 'environment-map' && '$specula' bench accuracy --help | grep -q 'Pareto front'"
 finish

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -147,4 +148,23 @@ TEST(AccuracyReport, CsvMarkdownAndPlotCarryEverySettingAndMarkTheFront) {
   EXPECT_NE(plot.find("80.000 0.000100 "), std::string::npos) << plot;
   const std::string frontBlock = plot.substr(plot.find("$front << EOD"));
   EXPECT_LT(frontBlock.find("12.500 "), frontBlock.find("80.000 ")) << "the front is drawn in order of time";
+}
+
+TEST(AccuracyReport, CrowdedSettingsGetLabelsThatDoNotOverlap) {
+  std::vector<bench::AccuracyRow> rows;
+  for (int i = 0; i < 12; ++i) rows.push_back(accuracy("same " + std::to_string(i), 100.0, 0.0218));  // identical points
+  for (int i = 0; i < 6; ++i) rows.push_back(accuracy("near " + std::to_string(i), 100.0 + i, 0.0218 * (1.0 + 0.01 * i)));
+  bench::markParetoFront(rows);
+  const std::string plot = bench::accuracyPlotScript(rows, "crowded", "a.png", "a.svg");
+  const std::string block = plot.substr(plot.find("$settings << EOD\n") + 17, plot.find("EOD\n$front") - plot.find("$settings << EOD\n") - 17);
+  std::vector<double> heights;
+  for (const std::string& line : lines(block)) {
+    std::stringstream fields(line);
+    double time = 0.0, mismatch = 0.0, labelHeight = 0.0;
+    fields >> time >> mismatch >> labelHeight;
+    heights.push_back(std::log10(labelHeight));
+  }
+  ASSERT_EQ(heights.size(), rows.size());
+  std::sort(heights.begin(), heights.end());
+  for (std::size_t i = 1; i < heights.size(); ++i) EXPECT_GT(heights[i] - heights[i - 1], 0.02) << "labels " << i - 1 << " and " << i;
 }

@@ -51,12 +51,16 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
 
 std::vector<OptionSpec> reflectionOptions() {
   const passes::ReflectionSettings defaults;
+  char scale[96], faceSize[96];
+  std::snprintf(scale, sizeof scale, "G-buffer texels per frame pixel along each axis, %g to %g", passes::kMinGBufferScale,
+                passes::kMaxGBufferScale);
+  std::snprintf(faceSize, sizeof faceSize, "cube face side in texels (environment-map), %d to %d", passes::kMinEnvironmentMapSize,
+                passes::kMaxEnvironmentMapSize);
   std::vector<OptionSpec> specs = {
       {"margin", "SHARE", "G-buffer border per side as a share of the frame", "0.1"},
-      {"gbuffer-scale", "X", "G-buffer texels per frame pixel along each axis, 0.125 to 4", "1"},
+      {"gbuffer-scale", "X", scale, "1"},
       {"gbuffer-precision", "BITS", "G-buffer float bits: 32 (RGBA32F) or 16 (RGBA16F)", "32"},
-      {"environment-size", "N", "cube face side in texels (environment-map), 8 to 2048",
-       std::to_string(defaults.environmentMapSize)},
+      {"environment-size", "N", faceSize, std::to_string(defaults.environmentMapSize)},
   };
   for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
   return specs;
@@ -68,16 +72,19 @@ Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& opt
   if (!margin || *margin < 0.0 || *margin > 1.0) return Error{"--margin expects a share in [0, 1], got '" + options.text("margin") + "'"};
   settings.gbufferMargin = static_cast<float>(*margin);
   auto scale = options.number("gbuffer-scale");
-  if (!scale || *scale < 0.125 || *scale > 4.0)
-    return Error{"--gbuffer-scale expects texels per pixel from 0.125 to 4, got '" + options.text("gbuffer-scale") + "'"};
+  if (!scale || *scale < passes::kMinGBufferScale || *scale > passes::kMaxGBufferScale) {
+    char range[64];
+    std::snprintf(range, sizeof range, "from %g to %g", passes::kMinGBufferScale, passes::kMaxGBufferScale);
+    return Error{"--gbuffer-scale expects texels per pixel " + std::string(range) + ", got '" + options.text("gbuffer-scale") + "'"};
+  }
   settings.gbufferScale = static_cast<float>(*scale);
   const std::string precision = options.text("gbuffer-precision");
   if (precision == "32") settings.gbufferPrecision = passes::GBufferPrecision::Float32;
   else if (precision == "16") settings.gbufferPrecision = passes::GBufferPrecision::Float16;
   else return Error{"--gbuffer-precision expects 32 or 16 (bits per channel), got '" + precision + "'"};
-  auto faceSize = options.integer("environment-size", 8, 2048);
-  if (!faceSize) return Error{faceSize.error()};
-  settings.environmentMapSize = *faceSize;
+  auto cubeFace = options.integer("environment-size", passes::kMinEnvironmentMapSize, passes::kMaxEnvironmentMapSize);
+  if (!cubeFace) return Error{cubeFace.error()};
+  settings.environmentMapSize = *cubeFace;
   auto tessellation = parseTessellationOptions(options);
   if (!tessellation) return Error{tessellation.error()};
   settings.tessellation = *tessellation;

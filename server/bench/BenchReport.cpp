@@ -228,7 +228,7 @@ std::string formatAccuracyMarkdown(std::span<const AccuracyRow> rows, const std:
 std::string accuracyPlotScript(std::span<const AccuracyRow> rows, const std::string& title, const std::string& pngFile,
                                const std::string& svgFile) {
   // Log axes cannot show 0: a mismatch below this floor is drawn on it.
-  constexpr double kMismatchFloor = 1e-4;
+  static constexpr double kMismatchFloor = 1e-4;
   // Labels closer than this (decades, both axes) to one already placed move down a step.
   constexpr double kLabelWidth = 0.25, kLabelHeight = 0.035;
   struct Point {
@@ -260,15 +260,17 @@ std::string accuracyPlotScript(std::span<const AccuracyRow> rows, const std::str
     minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
     minY = std::min({minY, p.y, p.labelY}), maxY = std::max(maxY, p.y);
   }
+  const auto position = [](const AccuracyRow& r) {
+    return number(r.frameMilliseconds, 3) + " " + number(std::max(r.mirrorMismatch, kMismatchFloor), 6);
+  };
   std::string data, front;
   std::vector<const Point*> pareto;
   for (const Point& p : points) {
-    data += number(std::pow(10.0, p.x), 3) + " " + number(std::pow(10.0, p.y), 6) + " " + number(std::pow(10.0, p.labelY), 6) +
-            " " + gnuplotString(p.row->setting) + "\n";
+    data += position(*p.row) + " " + number(std::pow(10.0, p.labelY), 6) + " " + gnuplotString(p.row->setting) + "\n";
     if (p.row->pareto) pareto.push_back(&p);
   }
   std::sort(pareto.begin(), pareto.end(), [](const Point* a, const Point* b) { return a->x < b->x; });
-  for (const Point* p : pareto) front += number(std::pow(10.0, p->x), 3) + " " + number(std::pow(10.0, p->y), 6) + "\n";
+  for (const Point* p : pareto) front += position(*p->row) + "\n";
   const auto power = [](double exponent) { return number(std::pow(10.0, exponent), 6); };
   std::string script = "# gnuplot script written by `specula bench accuracy`; rerun with: gnuplot <this file>\n";
   script += "# settings: frame ms, mirror mismatch, label height, name\n";

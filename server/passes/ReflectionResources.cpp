@@ -39,7 +39,6 @@ Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 
   size_ = size;
   margin_ = margin;
   coveredPixels_ = covered;
-  texelsPerPixel_ = static_cast<float>(size.x) / static_cast<float>(covered.x);
   precision_ = precision;
   coarseLevel_ = 0;
   while (std::max(levelSize(coarseLevel_).x, levelSize(coarseLevel_).y) > kCoarsestSide) ++coarseLevel_;

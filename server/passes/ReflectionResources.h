@@ -2,6 +2,7 @@
 // GPU state the reflection passes share and keep between frames: the mirror G-buffer (one layer
 // per mirror, with its pyramid), the reflected-vertex slots (last frame's texels live there) and
 // the search statistics.
+#include <algorithm>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -38,7 +39,7 @@ class ReflectionResources {
   glm::ivec2 margin() const { return margin_; }  // frame pixels added on each side
   // The widened frame (frame + 2 × margin, in pixels) the G-buffer covers, at its resolution.
   glm::ivec2 coveredPixels() const { return coveredPixels_; }
-  float texelsPerPixel() const { return texelsPerPixel_; }
+  float texelsPerPixel() const { return static_cast<float>(size_.x) / static_cast<float>(std::max(coveredPixels_.x, 1)); }
   GBufferPrecision precision() const { return precision_; }
   GLenum textureFormat() const { return precision_ == GBufferPrecision::Float16 ? GL_RGBA16F : GL_RGBA32F; }
   int coarseLevel() const { return coarseLevel_; }
@@ -66,7 +67,6 @@ class ReflectionResources {
   const gl::GlApi* gl_;
   const ReflectionSlots& slots_;
   glm::ivec2 size_{0}, margin_{0}, coveredPixels_{0};
-  float texelsPerPixel_ = 1.0f;
   GBufferPrecision precision_ = GBufferPrecision::Float32;
   int coarseLevel_ = 0;
   gl::GlTexture position_, normal_, depth_;

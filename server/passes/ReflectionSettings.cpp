@@ -16,10 +16,14 @@ std::string describeTessellation(const TessellationSettings& settings) {
 
 std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& settings) {
   if (!(settings.gbufferMargin >= 0.0f && settings.gbufferMargin <= 1.0f)) return "G-buffer margin must lie in [0, 1]";
-  if (!(settings.gbufferScale >= 0.125f && settings.gbufferScale <= 4.0f))
-    return "G-buffer scale must lie in [0.125, 4] texels per pixel";
-  if (settings.environmentMapSize < 8 || settings.environmentMapSize > 2048)
-    return "environment map size must lie in [8, 2048] texels per cube face";
+  if (!(settings.gbufferScale >= kMinGBufferScale && settings.gbufferScale <= kMaxGBufferScale)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "G-buffer scale must lie in [%g, %g] texels per pixel", kMinGBufferScale, kMaxGBufferScale);
+    return text;
+  }
+  if (settings.environmentMapSize < kMinEnvironmentMapSize || settings.environmentMapSize > kMaxEnvironmentMapSize)
+    return "environment map size must lie in [" + std::to_string(kMinEnvironmentMapSize) + ", " +
+           std::to_string(kMaxEnvironmentMapSize) + "] texels per cube face";
   if (settings.maxWalkSteps < 1) return "the search needs at least one step per climb";
   return std::nullopt;
 }

@@ -42,15 +42,19 @@ struct TessellationSettings {
 // "crack-free pixels >= 1 level 4", or "none": how reports name a setting.
 std::string describeTessellation(const TessellationSettings& settings);
 
+// The ranges reflectionSettingsProblem() accepts (and the command-line options name).
+inline constexpr float kMinGBufferScale = 0.125f, kMaxGBufferScale = 4.0f;
+inline constexpr int kMinEnvironmentMapSize = 8, kMaxEnvironmentMapSize = 2048;
+
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;
   // Extra G-buffer border on each side, as a share of the frame size, so reflection points of a
   // mirror just off-screen still have texels.
   float gbufferMargin = 0.1f;
-  // G-buffer texels per frame pixel along each axis (1: one texel per pixel), in [1/8, 4].
+  // G-buffer texels per frame pixel along each axis (1: one texel per pixel), in [kMin, kMaxGBufferScale].
   float gbufferScale = 1.0f;
   GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;
-  int environmentMapSize = 256;  // cube face side in texels (EnvironmentMap), in [8, 2048]
+  int environmentMapSize = 256;  // cube face side in texels (EnvironmentMap), in [kMin, kMaxEnvironmentMapSize]
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb

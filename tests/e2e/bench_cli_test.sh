@@ -88,6 +88,8 @@ check "without gnuplot it fails before rendering" bash -c "! grep -q 'bench accu
 PATH=/nonexistent "$specula" bench accuracy --scene quad --size 64x48 --poses 1 --no-plot --out "$work/acc4" >/dev/null 2>&1
 check "--no-plot works without gnuplot and still writes the script" bash -c "test -s '$work/acc4/accuracy.csv' && test -s '$work/acc4/accuracy.gp' && test ! -e '$work/acc4/accuracy.png'"
 fails_with "bench accuracy names a bad orbit" "--orbit expects degrees from 0 to 180" bench accuracy --orbit 500
+fails_with "bench accuracy names bad scene seconds" "--seconds expects scene seconds from 0 to 3600, got 'later'" bench accuracy --seconds later
+fails_with "bench accuracy names a bad size" "--size expects WIDTHxHEIGHT" bench accuracy --size huge
 fails_with "bench accuracy names a bad pose count" "--poses expects an integer" bench accuracy --poses 0
 fails_with "bench accuracy names an unknown scene" "neither a built-in scene" bench accuracy --scene nope --out "$work/acc5"
 fails_with "bench accuracy names an output folder it cannot create" "could not create the output folder" bench accuracy --out /proc/nope

@@ -33,6 +33,16 @@ fails_with "a bad tessellation mode lists the modes" "--tessellation expects non
 fails_with "a bad metric lists the metrics" "--metric expects pixels or angle" render --metric px
 fails_with "a negative threshold is refused" "--threshold expects a number >= 0" render --threshold -1
 fails_with "a level past the bound is refused" "--level expects an integer in [0, 8]" render --level 9
+fails_with "an unknown method lists the methods" "--method expects search, environment-map, raytrace or none" render --method cubemap
+fails_with "a G-buffer scale past the bound is refused" "--gbuffer-scale expects texels per pixel from 0.125 to 4, got '8'" render --gbuffer-scale 8
+fails_with "a non-numeric G-buffer scale is refused" "--gbuffer-scale expects texels per pixel" render --gbuffer-scale fine
+fails_with "a G-buffer precision other than 32 or 16 is refused" "--gbuffer-precision expects 32 or 16" render --gbuffer-precision 8
+fails_with "a cube face past the bound is refused" "--environment-size expects an integer in [8, 2048]" render --environment-size 4096
+fails_with "a margin past the bound is refused" "--margin expects a share in [0, 1]" render --margin 2
+"$specula" render --method environment-map --environment-size 32 --gbuffer-scale 0.5 --gbuffer-precision 16 --size 96x72 --out "$work/env.png" >"$work/env.txt" 2>&1
+check "the environment-map method renders with the G-buffer options" test $? -eq 0
+check "... and runs the environment-map pass, not the search" bash -c "grep -q 'environment-map' '$work/env.txt' && ! grep -q ' search ' '$work/env.txt'"
+check "... and writes a PNG" bash -c "head -c 8 '$work/env.png' | od -An -tx1 | grep -q '89 50 4e 47'"
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"
 check "render --help lists every option" bash -c "for o in scene size eye target up fov time tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"

@@ -87,6 +87,7 @@ namespace specula::gl {
   X(PFNGLUNIFORM1UIPROC, Uniform1ui)                                                               \
   X(PFNGLUNIFORM1FPROC, Uniform1f)                                                                 \
   X(PFNGLUNIFORM2IPROC, Uniform2i)                                                                 \
+  X(PFNGLUNIFORM4IPROC, Uniform4i)                                                                 \
   X(PFNGLUNIFORM2FPROC, Uniform2f)                                                                 \
   X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                                               \
   X(PFNGLUNIFORM4FVPROC, Uniform4fv)                                                               \

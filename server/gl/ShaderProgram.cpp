@@ -122,6 +122,10 @@ void ShaderProgram::set(const char* name, unsigned value) const {
 void ShaderProgram::set(const char* name, const glm::ivec2& value) const {
   gl_->Uniform2i(gl_->GetUniformLocation(id_, name), value.x, value.y);
 }
+
+void ShaderProgram::set(const char* name, const glm::ivec4& value) const {
+  gl_->Uniform4i(gl_->GetUniformLocation(id_, name), value.x, value.y, value.z, value.w);
+}
 void ShaderProgram::set(const char* name, float value) const { gl_->Uniform1f(gl_->GetUniformLocation(id_, name), value); }
 void ShaderProgram::set(const char* name, const glm::vec2& value) const {
   gl_->Uniform2f(gl_->GetUniformLocation(id_, name), value.x, value.y);

@@ -105,13 +105,14 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
   gl.Disable(GL_CULL_FACE);  // open meshes are seen from both sides
   gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // no seams where a lookup straddles two faces
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
-    capture(frame, *mirror, mirrorCentre(frame, mirror->mirrorObject));
+    // One cube per mirror, looked up from each of its parts' layers.
+    if (mirror->part == 0) capture(frame, *mirror, mirrorCentre(frame, mirror->mirrorObject));
 
     frame.target.bind();
     gl.Enable(GL_FRAMEBUFFER_SRGB);
     gl.Enable(GL_STENCIL_TEST);
     gl.StencilMask(0);
-    gl.StencilFunc(GL_EQUAL, mirror->layer + 1, 0xFF);
+    gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
     gl.Disable(GL_DEPTH_TEST);
     gl.Enable(GL_BLEND);
     gl.BlendFunc(GL_ONE, GL_ONE);
@@ -127,8 +128,7 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
     lookup_.set("gbufferNormal", 1);
     lookup_.set("environment", 2);
     lookup_.set("layer", mirror->layer);
-    lookup_.set("marginPixels", glm::vec2(resources.margin()));
-    lookup_.set("texelsPerPixel", resources.texelsPerPixel());
+    setGBufferPixelMapping(lookup_, resources);
     lookup_.set("eyePosition", frame.pose.camera.eye);
     lookup_.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
     gl.BindVertexArray(emptyVertexArray_.id());

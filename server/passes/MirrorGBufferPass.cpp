@@ -37,9 +37,11 @@ TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip
 }  // namespace
 
 Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::GlApi& gl) {
-  auto program = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer.frag"});
-  if (!program) return Error{program.error()};
-  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(std::move(program.value())));
+  auto mesh = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer.frag"});
+  if (!mesh) return Error{mesh.error()};
+  auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer.frag"});
+  if (!quadric) return Error{quadric.error()};
+  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(quadric.value())));
 }
 
 std::span<const std::string_view> MirrorGBufferPass::writes() const { return kWrites; }
@@ -62,9 +64,11 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   gl.DepthFunc(GL_LESS);
   gl.DepthMask(GL_TRUE);
   gl.Enable(GL_SCISSOR_TEST);
-  program_.use();
-  program_.set("worldToClip", worldToClip);
-  program_.set("eyePosition", frame.pose.camera.eye);
+  for (const gl::ShaderProgram* program : {&mesh_, &quadric_}) {
+    program->use();
+    program->set("worldToClip", worldToClip);
+    program->set("eyePosition", frame.pose.camera.eye);
+  }
 
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.positionTexture(), 0, mirror->layer);
@@ -85,10 +89,22 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     if (rect.empty()) continue;
     gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
     const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror->mirrorObject];
-    const glm::mat3 normalToWorld = math::normalMatrix(objectToWorld);
-    program_.set("objectToWorld", objectToWorld);
-    program_.set("normalToWorld", normalToWorld);
-    setMirrorQuadric(program_, *frame.scene.objects[mirror->mirrorObject].mirror, objectToWorld);
+    const scene::MirrorInfo& info = *frame.scene.objects[mirror->mirrorObject].mirror;
+    if (hasExactQuadric(info)) {
+      quadric_.use();
+      setMirrorQuadric(quadric_, info, objectToWorld);
+      gl.BindVertexArray(emptyVertexArray_.id());
+      gl.DrawArrays(GL_TRIANGLES, 0, kQuadricProxyVertices);
+      continue;
+    }
+    mesh_.use();
+    mesh_.set("objectToWorld", objectToWorld);
+    mesh_.set("normalToWorld", math::normalMatrix(objectToWorld));
+    setMirrorQuadric(mesh_, info, objectToWorld);
+    // A mirror of several parts draws them all for depth, and marks only this part's texels.
+    mesh_.set("part", mirror->partCount > 1 ? mirror->part : -1);
+    if (mirror->partCount > 1)
+      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, resources.triangleParts(mirror->mirrorObject));
     frame.meshes.draw(frame.searchMesh(mirror->mirrorObject));
   }
   gl.Disable(GL_SCISSOR_TEST);

@@ -1,9 +1,11 @@
 #pragma once
-// Renders each visible mirror's (closed) surface into its G-buffer layer: world positions and
+// Renders each visible mirror part's (closed) surface into its G-buffer layer: world positions and
 // normals through the eye's frustum widened by the margin (Estalella et al. 2006, §4 and §5.2).
+// Other parts of the same mirror write depth but no texel, so they still hide what lies behind them.
 #include <memory>
 
 #include "base/Result.h"
+#include "gl/GlObject.h"
 #include "gl/ShaderProgram.h"
 #include "passes/Pass.h"
 
@@ -19,8 +21,11 @@ class MirrorGBufferPass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  explicit MirrorGBufferPass(gl::ShaderProgram program) : program_(std::move(program)) {}
-  gl::ShaderProgram program_;
+  MirrorGBufferPass(const gl::GlApi& gl, gl::ShaderProgram mesh, gl::ShaderProgram quadric)
+      : mesh_(std::move(mesh)), quadric_(std::move(quadric)), emptyVertexArray_(gl) {}
+  gl::ShaderProgram mesh_;     // the mirror's (search) mesh
+  gl::ShaderProgram quadric_;  // an exact quadric inside its proxy box
+  gl::GlVertexArray emptyVertexArray_;
 };
 
 }  // namespace specula::passes

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <string>
 
+#include "math/Bounds.h"
+#include "math/TriangleBvh.h"
+
 namespace specula::passes {
 
 TexelRect TexelRect::united(const TexelRect& other) const {
@@ -11,7 +14,18 @@ TexelRect TexelRect::united(const TexelRect& other) const {
   return {glm::min(low, other.low), glm::max(high, other.high)};
 }
 
-ReflectionResources::ReflectionResources(const gl::GlApi& gl, const ReflectionSlots& slots)
+namespace {
+
+template <class T>
+void upload(const gl::GlApi& gl, const gl::GlBuffer& buffer, const std::vector<T>& data) {
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(data.size(), 1) * sizeof(T)),
+                data.empty() ? nullptr : data.data(), GL_STATIC_DRAW);
+}
+
+}  // namespace
+
+ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots)
     : gl_(&gl), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
       statistics_(gl), tessellation_(gl) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, reflected_.id());
@@ -19,6 +33,29 @@ ReflectionResources::ReflectionResources(const gl::GlApi& gl, const ReflectionSl
                 nullptr, GL_DYNAMIC_COPY);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
+  for (const auto& [mirrorObject, parts] : slots.parts) {
+    if (parts.triangleParts.empty()) continue;
+    std::vector<std::uint8_t> packed(parts.triangleParts);
+    packed.resize((packed.size() + 3) / 4 * 4, 0);  // whole uints
+    upload(gl, triangleParts_.emplace(mirrorObject, gl::GlBuffer(gl)).first->second, packed);
+  }
+  for (const MirrorSlots& mirror : slots.mirrors) {
+    if (!mirror.seesItself || mirror.part != 0) continue;
+    const scene::Mesh& mesh = scene.meshes[scene.objects[mirror.mirrorObject].mesh];
+    std::vector<glm::vec3> positions;
+    positions.reserve(mesh.vertices.size());
+    math::Bounds bounds;
+    for (const scene::Vertex& v : mesh.vertices) {
+      positions.push_back(v.position);
+      bounds.add(v.position);
+    }
+    const math::TriangleBvh bvh = math::TriangleBvh::build(positions, mesh.indices);
+    MirrorBvh& buffers = mirrorBvhs_.emplace(mirror.mirrorObject, MirrorBvh{gl::GlBuffer(gl), gl::GlBuffer(gl), 0.0f}).first->second;
+    upload(gl, buffers.nodes, bvh.nodes());
+    upload(gl, buffers.triangles, bvh.triangles());
+    // Float rounding of the start point, well below any feature of the mirror.
+    buffers.minDistance = 1e-4f * std::max(bounds.radius(), 1e-30f);
+  }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   resetCoherence();
   covered_.resize(slots.mirrors.size());
@@ -96,6 +133,11 @@ std::vector<ReflectedVertex> ReflectionResources::readReflectedVertices() const 
                         result.data());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   return result;
+}
+
+void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources) {
+  program.set("marginPixels", glm::vec2(resources.margin()));
+  program.set("texelsPerPixel", resources.texelsPerPixel());
 }
 
 }  // namespace specula::passes

@@ -4,15 +4,18 @@
 // the search statistics.
 #include <algorithm>
 #include <glm/glm.hpp>
+#include <map>
 #include <vector>
 
 #include "base/Result.h"
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
+#include "gl/ShaderProgram.h"
 #include "passes/ReflectedVertex.h"
 #include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
 #include "passes/TessellationBuffers.h"
+#include "scene/Scene.h"
 
 namespace specula::passes {
 
@@ -27,7 +30,14 @@ class ReflectionResources {
  public:
   static constexpr int kCoarsestSide = 8;  // the cold start scans a pyramid level at most this big
 
-  ReflectionResources(const gl::GlApi& gl, const ReflectionSlots& slots);
+  // The hierarchy of a mirror's own mesh on the GPU (shaders/common/triangle-bvh.glsl), for
+  // mirrors whose reflected rays may meet them again.
+  struct MirrorBvh {
+    gl::GlBuffer nodes, triangles;
+    float minDistance = 0.0f;  // object space: hits nearer the ray's start are its own surface
+  };
+
+  ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots);
 
   // Sizes the G-buffer for a width × height frame with `margin` pixels added on each side, at
   // `texelsPerPixel` texels per pixel and `precision`; reallocates (and forgets every texel) only
@@ -50,6 +60,10 @@ class ReflectionResources {
   GLuint depthTexture() const { return depth_.id(); }
   GLuint reflectedVertices() const { return reflected_.id(); }
   GLuint statistics() const { return statistics_.id(); }
+  // The part of each triangle of a mirror's search mesh (bytes, four to a uint), for mirrors of several parts.
+  GLuint triangleParts(std::size_t mirrorObject) const { return triangleParts_.at(mirrorObject).id(); }
+  // Set for every mirror with MirrorSlots::seesItself.
+  const MirrorBvh& mirrorBvh(std::size_t mirrorObject) const { return mirrorBvhs_.at(mirrorObject); }
   TessellationBuffers& tessellation() { return tessellation_; }
 
   // The texels a mirror covers now (after the G-buffer pass), and those that changed this frame:
@@ -72,8 +86,13 @@ class ReflectionResources {
   gl::GlTexture position_, normal_, depth_;
   gl::GlFramebuffer framebuffer_;
   gl::GlBuffer reflected_, statistics_;
+  std::map<std::size_t, gl::GlBuffer> triangleParts_;
+  std::map<std::size_t, MirrorBvh> mirrorBvhs_;
   std::vector<TexelRect> covered_, changed_;
   TessellationBuffers tessellation_;
 };
+
+// Sets the uniforms of shaders/common/gbuffer-texel.glsl: where a frame pixel lies in the G-buffer.
+void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources);
 
 }  // namespace specula::passes

@@ -1,18 +1,34 @@
 #include "passes/ReflectionSlots.h"
 
+#include "passes/QuadricUniforms.h"
+
 namespace specula::passes {
 
 ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
   ReflectionSlots slots;
+  int stencil = 0;
   for (std::size_t m = 0; m < scene.objects.size(); ++m) {
-    if (!scene.objects[m].mirror || scene.materials[scene.objects[m].material].reflectivity <= 0.0f) continue;
-    MirrorSlots mirror{m, static_cast<int>(slots.mirrors.size()), {}};
-    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-      if (o == m || !scene.objects[o].reflected) continue;
-      mirror.reflected.push_back({o, slots.slotCount});
-      slots.slotCount += static_cast<std::uint32_t>(scene.meshes[scene.objects[o].mesh].vertices.size());
+    const scene::SceneObject& object = scene.objects[m];
+    if (!object.mirror || scene.materials[object.material].reflectivity <= 0.0f) continue;
+    ++stencil;
+    const scene::MirrorInfo& info = *object.mirror;
+    const bool exactQuadric = hasExactQuadric(info);
+    scene::MirrorParts parts{{scene::MirrorPart{scene::SurfaceKind::Convex, 0}}, {}};
+    if (!exactQuadric) {
+      parts = scene::MirrorParts::of(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], info.curvature);
+      slots.parts.emplace(m, parts);
     }
-    slots.mirrors.push_back(std::move(mirror));
+    const bool seesItself = object.reflected && !exactQuadric && !parts.cannotSeeItself(info.closed);
+    for (std::size_t p = 0; p < parts.parts.size(); ++p) {
+      MirrorSlots mirror{m, static_cast<int>(slots.mirrors.size()), stencil, static_cast<int>(p),
+                         static_cast<int>(parts.parts.size()), parts.parts[p].kind, seesItself, {}};
+      for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        if (o == m || !scene.objects[o].reflected) continue;
+        mirror.reflected.push_back({o, slots.slotCount});
+        slots.slotCount += static_cast<std::uint32_t>(scene.meshes[scene.objects[o].mesh].vertices.size());
+      }
+      slots.mirrors.push_back(std::move(mirror));
+    }
   }
   return slots;
 }

@@ -1,9 +1,11 @@
 #pragma once
-// Where each (mirror, reflected object) pair keeps its reflected vertices in the GPU buffer.
+// Where each (mirror part, reflected object) pair keeps its reflected vertices in the GPU buffer.
 // Fixed per scene, so a vertex finds last frame's texel in the same slot (frame-to-frame coherence).
 #include <cstdint>
+#include <map>
 #include <vector>
 
+#include "scene/MirrorParts.h"
 #include "scene/Scene.h"
 
 namespace specula::passes {
@@ -13,18 +15,29 @@ struct ReflectionSlotRange {
   std::uint32_t firstSlot = 0;  // first of the object's vertex count slots
 };
 
+// One part of a mirror (scene::MirrorParts): its own G-buffer layer, search and reflection.
 struct MirrorSlots {
   std::size_t mirrorObject = 0;  // index into Scene::objects
-  int layer = 0;                 // G-buffer layer; the mirror's stencil value is layer + 1
+  int layer = 0;                 // G-buffer layer of this part
+  int stencil = 1;               // the mirror's stencil value, shared by its parts
+  int part = 0, partCount = 1;   // which part of the mirror's search mesh
+  scene::SurfaceKind kind = scene::SurfaceKind::Convex;
+  bool seesItself = false;       // reflected rays may meet this mirror again: its own mesh is ray-cast
   std::vector<ReflectionSlotRange> reflected;
 };
 
 struct ReflectionSlots {
-  std::vector<MirrorSlots> mirrors;
+  static constexpr int kMaxMirrors = 255;  // stencil values 1..255
+
+  std::vector<MirrorSlots> mirrors;  // one per part, a mirror's parts in a row
   std::uint32_t slotCount = 0;
+  // The parts of each mirror object's search mesh; analytic mirrors (one exact convex quadric) have none.
+  std::map<std::size_t, scene::MirrorParts> parts;
 
   // Every mirror reflects every other object that has `reflected` set (other mirrors included,
-  // with their own colour: no inter-reflections).
+  // with their own colour: no inter-reflections). A mesh mirror is split into parts of one
+  // curvature each; a mirror that is itself reflected and can meet its own reflected rays (not one
+  // closed convex part) shows its own colour where they do.
   static ReflectionSlots forScene(const scene::Scene& scene);
 };
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "math/Transform.h"
+#include "passes/QuadricUniforms.h"
 #include "passes/ShadingUniforms.h"
 
 namespace specula::passes {
@@ -15,7 +16,9 @@ constexpr std::array<std::string_view, 2> kWrites{"color", "depth"};
 Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
   auto program = gl::ShaderProgram::build(gl, {"scene/scene.vert", "scene/scene.frag"});
   if (!program) return Error{program.error()};
-  return std::unique_ptr<ScenePass>(new ScenePass(std::move(program.value())));
+  auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "scene/scene-quadric.frag"});
+  if (!quadric) return Error{quadric.error()};
+  return std::unique_ptr<ScenePass>(new ScenePass(gl, std::move(program.value()), std::move(quadric.value())));
 }
 
 std::span<const std::string_view> ScenePass::writes() const { return kWrites; }
@@ -35,26 +38,37 @@ void ScenePass::execute(const FrameContext& frame) {
   gl.ClearStencil(0);
   gl.StencilMask(0xFF);
   gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  // Each mirror whose reflection is drawn this frame marks its visible pixels with layer + 1;
+  // Each mirror whose reflection is drawn this frame marks its visible pixels with its stencil value;
   // everything else writes 0, so objects in front of a mirror cut its stencil.
   std::vector<int> stencil(frame.scene.objects.size(), 0);
-  for (const MirrorSlots* mirror : frame.plan.mirrors) stencil[mirror->mirrorObject] = mirror->layer + 1;
+  for (const MirrorSlots* mirror : frame.plan.mirrors) stencil[mirror->mirrorObject] = mirror->stencil;
   gl.Enable(GL_STENCIL_TEST);
   gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 
-  program_.use();
-  program_.set("worldToClip", frame.view.worldToClip());
-  program_.set("eyePosition", frame.pose.camera.eye);
-  setSceneLighting(program_, frame.scene);
+  for (const gl::ShaderProgram* program : {&program_, &quadric_}) {
+    program->use();
+    program->set("worldToClip", frame.view.worldToClip());
+    program->set("eyePosition", frame.pose.camera.eye);
+    setSceneLighting(*program, frame.scene);
+  }
   for (std::size_t i = 0; i < frame.scene.objects.size(); ++i) {
     const scene::SceneObject& object = frame.scene.objects[i];
-    program_.set("objectToWorld", frame.pose.objectToWorld[i]);
-    program_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
+    const bool quadric = object.mirror && hasExactQuadric(*object.mirror);
+    const gl::ShaderProgram& program = quadric ? quadric_ : program_;
+    program.use();
+    program.set("objectToWorld", frame.pose.objectToWorld[i]);
+    program.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
     const scene::Material& material = frame.scene.materials[object.material];
-    setMaterial(program_, material);
-    program_.set("surfaceWeight", stencil[i] != 0 ? 1.0f - material.reflectivity : 1.0f);
+    setMaterial(program, material);
+    program.set("surfaceWeight", stencil[i] != 0 ? 1.0f - material.reflectivity : 1.0f);
     gl.StencilFunc(GL_ALWAYS, stencil[i], 0xFF);
-    frame.meshes.draw(object.mesh);
+    if (quadric) {
+      setMirrorQuadric(program, *object.mirror, frame.pose.objectToWorld[i]);
+      gl.BindVertexArray(emptyVertexArray_.id());
+      gl.DrawArrays(GL_TRIANGLES, 0, kQuadricProxyVertices);
+    } else {
+      frame.meshes.draw(object.mesh);
+    }
   }
   gl.Disable(GL_STENCIL_TEST);
 }

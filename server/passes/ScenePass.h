@@ -1,9 +1,11 @@
 #pragma once
 // Draws every object as seen directly from the eye, lit, into colour and depth.
-// Mirrors are drawn with their own (base) colour; reflections are added by later passes.
+// Mirrors are drawn with their own (base) colour; reflections are added by later passes. A mirror
+// with an exact quadric is ray-cast per fragment, so its outline is the quadric's, not its mesh's.
 #include <memory>
 
 #include "base/Result.h"
+#include "gl/GlObject.h"
 #include "gl/ShaderProgram.h"
 #include "passes/Pass.h"
 
@@ -19,8 +21,11 @@ class ScenePass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  explicit ScenePass(gl::ShaderProgram program) : program_(std::move(program)) {}
+  ScenePass(const gl::GlApi& gl, gl::ShaderProgram program, gl::ShaderProgram quadric)
+      : program_(std::move(program)), quadric_(std::move(quadric)), emptyVertexArray_(gl) {}
   gl::ShaderProgram program_;
+  gl::ShaderProgram quadric_;  // exact quadrics inside their proxy boxes
+  gl::GlVertexArray emptyVertexArray_;
 };
 
 }  // namespace specula::passes

@@ -1,5 +1,6 @@
 #include "passes/SearchPass.h"
 
+#include <algorithm>
 #include <array>
 
 #include "passes/QuadricUniforms.h"
@@ -11,6 +12,10 @@ namespace {
 constexpr std::array<std::string_view, 2> kReads{"mirror-gbuffer", "gbuffer-pyramid"};
 constexpr std::array<std::string_view, 1> kWrites{"reflected-vertices"};
 constexpr GLuint kGroupSize = 64;  // local_size_x of search.comp
+// Texels a cold start scans along the mirror's longer side, at most, and the coarse texels it climbs
+// from: a closed convex mirror has one best point, other parts may have several local ones.
+constexpr int kConvexColdScanSide = 8, kColdScanSide = 16;
+constexpr int kConvexColdCandidates = 1, kColdCandidates = 3;
 }  // namespace
 
 Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
@@ -31,13 +36,24 @@ void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& fra
   gl.ActiveTexture(GL_TEXTURE0);
   program.set("gbufferPosition", 0);
   program.set("gbufferNormal", 1);
-  program.set("coarseLevel", frame.reflections.coarseLevel());
   program.set("eyePosition", frame.pose.camera.eye);
   program.set("maxWalkSteps", frame.settings.maxWalkSteps);
 }
 
 void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame, const MirrorSlots& mirror) {
   program.set("layer", mirror.layer);
+  // The cold start scans the mirror's texels at the finest level where they span at most the scan side.
+  const bool closedConvex = mirror.partCount == 1 && mirror.kind == scene::SurfaceKind::Convex &&
+                            frame.scene.objects[mirror.mirrorObject].mirror->closed;
+  const int side = closedConvex ? kConvexColdScanSide : kColdScanSide;
+  const TexelRect& covered = frame.reflections.coveredRect(mirror.layer);
+  int level = 0;
+  while (level < frame.reflections.coarseLevel() &&
+         std::max(covered.high.x - covered.low.x, covered.high.y - covered.low.y) > (side << level))
+    ++level;
+  program.set("coldCandidates", closedConvex ? kConvexColdCandidates : kColdCandidates);
+  program.set("coarseLevel", level);
+  program.set("coarseRect", glm::ivec4(covered.low >> level, ((covered.high - 1) >> level) + 1));
   setMirrorQuadric(program, *frame.scene.objects[mirror.mirrorObject].mirror, frame.pose.objectToWorld[mirror.mirrorObject]);
 }
 

@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "math/Transform.h"
+#include "passes/ReflectionResources.h"
 #include "passes/ShadingUniforms.h"
 
 namespace specula::passes {
@@ -22,8 +24,11 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   if (!tessellated) return Error{tessellated.error()};
   auto region = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/mirror-region.frag"});
   if (!region) return Error{region.error()};
-  return std::unique_ptr<VirtualObjectsPass>(
-      new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()), std::move(region.value())));
+  auto selfReflection =
+      gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/self-reflection.frag"});
+  if (!selfReflection) return Error{selfReflection.error()};
+  return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
+                                                                    std::move(region.value()), std::move(selfReflection.value())));
 }
 
 std::span<const std::string_view> VirtualObjectsPass::reads() const { return kReads; }
@@ -57,6 +62,47 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlot
   }
 }
 
+void VirtualObjectsPass::drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror, bool depthOnly) const {
+  const gl::GlApi& gl = frame.gl;
+  const ReflectionResources& resources = frame.reflections;
+  const ReflectionResources::MirrorBvh& bvh = resources.mirrorBvh(mirror.mirrorObject);
+  const scene::SceneObject& object = frame.scene.objects[mirror.mirrorObject];
+  const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror.mirrorObject];
+  selfReflection_.use();  // the G-buffer textures are bound by execute()
+  selfReflection_.set("gbufferPosition", 0);
+  selfReflection_.set("gbufferNormal", 1);
+  setGBufferPixelMapping(selfReflection_, resources);
+  selfReflection_.set("layer", mirror.layer);
+  selfReflection_.set("eyePosition", frame.pose.camera.eye);
+  selfReflection_.set("objectToWorld", objectToWorld);
+  selfReflection_.set("worldToObject", glm::inverse(objectToWorld));
+  selfReflection_.set("normalToWorld", math::normalMatrix(objectToWorld));
+  selfReflection_.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+  selfReflection_.set("minDistance", bvh.minDistance);
+  selfReflection_.set("reflectivity", frame.scene.materials[object.material].reflectivity);
+  selfReflection_.set("depthOnly", depthOnly ? 1 : 0);
+  setSceneLighting(selfReflection_, frame.scene);
+  setMaterial(selfReflection_, frame.scene.materials[object.material]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, bvh.nodes.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, bvh.triangles.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, frame.meshes.vertexBuffer(object.mesh));
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, frame.meshes.indexBuffer(object.mesh));
+  gl.BindVertexArray(emptyVertexArray_.id());
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void VirtualObjectsPass::resetMirrorDepth(const FrameContext& frame) const {
+  // Virtual objects lie behind the mirror's surface: its pixels start at the far plane.
+  const gl::GlApi& gl = frame.gl;
+  region_.use();
+  gl.BindVertexArray(emptyVertexArray_.id());
+  gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  gl.Disable(GL_BLEND);
+  gl.DepthMask(GL_TRUE);
+  gl.DepthFunc(GL_ALWAYS);
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 void VirtualObjectsPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   frame.target.bind();
@@ -69,38 +115,55 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BlendFunc(GL_ONE, GL_ONE);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
+  gl.ActiveTexture(GL_TEXTURE1);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.normalTexture());
+  gl.ActiveTexture(GL_TEXTURE0);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.positionTexture());
   for (const gl::ShaderProgram* objects : {&objects_, &tessellated_}) {
     objects->use();
     objects->set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+    objects->set("gbufferPosition", 0);
+    objects->set("gbufferNormal", 1);
+    objects->set("eyePosition", frame.pose.camera.eye);
+    setGBufferPixelMapping(*objects, frame.reflections);
     setSceneLighting(*objects, frame.scene);
   }
 
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  // A mirror's parts lie in a row of the plan: its depth is reset before the first, and its
+  // background added after the last.
+  for (std::size_t i = 0; i < frame.plan.mirrors.size(); ++i) {
+    const MirrorSlots* mirror = frame.plan.mirrors[i];
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
-    gl.StencilFunc(GL_EQUAL, mirror->layer + 1, 0xFF);
+    gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
+    const int convex = mirror->kind == scene::SurfaceKind::Convex ? 1 : 0;
+    setForBoth("layer", mirror->layer);
+    setForBoth("partMask", mirror->partCount > 1 ? 1 : 0);
+    // A convex part's hidden corners are mirrored just beyond its silhouette; on a mirror of several
+    // parts the part's outline is not a silhouette, so its fragments are checked like a concave part's.
+    setForBoth("rayCheck", convex == 0 || mirror->partCount > 1 ? 1 : 0);
+    setForBoth("everyCornerReflected", 1 - convex);
+    setForBoth("reflectivity", reflectivity);
+    if (mirror->part == 0) resetMirrorDepth(frame);
 
-    // 1. Reset depth inside this mirror to the far plane: virtual objects lie behind its surface.
-    region_.use();
-    gl.BindVertexArray(emptyVertexArray_.id());
+    // Depth of the nearest virtual surface, then shade only that surface, added over the mirror.
     gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gl.Disable(GL_BLEND);
     gl.DepthMask(GL_TRUE);
-    gl.DepthFunc(GL_ALWAYS);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-
-    // 2. Depth of the nearest virtual surface, 3. shade only that surface, added over the mirror.
-    setForBoth("reflectivity", reflectivity);
     gl.DepthFunc(GL_LESS);
     setForBoth("depthOnly", 1);
+    if (mirror->seesItself) drawSelfReflection(frame, *mirror, true);
     drawObjects(frame, *mirror);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.Enable(GL_BLEND);
     gl.DepthMask(GL_FALSE);
     gl.DepthFunc(GL_EQUAL);
     setForBoth("depthOnly", 0);
+    if (mirror->seesItself) drawSelfReflection(frame, *mirror, false);
     drawObjects(frame, *mirror);
 
-    // 4. Where no virtual object landed, the mirror reflects the background.
+    // Where no virtual object landed, the mirror reflects the background.
+    const bool lastPart = i + 1 == frame.plan.mirrors.size() || frame.plan.mirrors[i + 1]->mirrorObject != mirror->mirrorObject;
+    if (!lastPart) continue;
     region_.use();
     region_.set("reflectedBackground", reflectivity * frame.scene.background);
     gl.BindVertexArray(emptyVertexArray_.id());

@@ -21,8 +21,17 @@ class VirtualObjectsPass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region)
-      : objects_(std::move(objects)), tessellated_(std::move(tessellated)), region_(std::move(region)), emptyVertexArray_(gl) {}
+  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region,
+                     gl::ShaderProgram selfReflection)
+      : objects_(std::move(objects)),
+        tessellated_(std::move(tessellated)),
+        region_(std::move(region)),
+        selfReflection_(std::move(selfReflection)),
+        emptyVertexArray_(gl) {}
+  // Sets the depth inside the mirror's stencil to the far plane.
+  void resetMirrorDepth(const FrameContext& frame) const;
+  // Where the part's reflected rays meet the mirror itself: the mirror's colour at that depth.
+  void drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror, bool depthOnly) const;
   // Draws the mirror's virtual objects with whichever program each needs.
   void drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const;
   // One reflected object from its own mesh and search slots (objects_ in use).
@@ -38,6 +47,7 @@ class VirtualObjectsPass final : public Pass {
   gl::ShaderProgram objects_;      // scene meshes at their search slots
   gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles
   gl::ShaderProgram region_;
+  gl::ShaderProgram selfReflection_;
   gl::GlVertexArray emptyVertexArray_;  // the full-screen triangle needs no attributes
 };
 

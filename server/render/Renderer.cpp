@@ -45,7 +45,7 @@ Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> s
       scene_(std::move(scene)),
       meshes_(context.api(), scene_->meshes),
       slots_(std::move(slots)),
-      reflections_(context.api(), slots_) {
+      reflections_(context.api(), *scene_, slots_) {
   for (const scene::Mesh& mesh : scene_->meshes) {
     math::Bounds bounds;
     for (const scene::Vertex& v : mesh.vertices) bounds.add(v.position);
@@ -117,7 +117,8 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     gl.QueryCounter(stamps[i + 1].id(), GL_TIMESTAMP);
   }
   RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision};
-  for (const passes::MirrorSlots* mirror : plan.mirrors) result.drawnMirrors.push_back(mirror->mirrorObject);
+  for (const passes::MirrorSlots* mirror : plan.mirrors)
+    if (mirror->part == 0) result.drawnMirrors.push_back(mirror->mirrorObject);
   gl.QueryCounter(stamps.back().id(), GL_TIMESTAMP);
   if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
   if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();

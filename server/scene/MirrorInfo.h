@@ -5,6 +5,8 @@
 
 namespace specula::scene {
 
+// How the renderer treats a mesh mirror (scene::MirrorParts): convex or concave declares it one part
+// of that curvature; mixed splits it into parts of one curvature each, found from its normals.
 enum class MirrorCurvature { Convex, Concave, Mixed };
 
 // An exact description of the mirror surface in object space, so exact solvers can serve as references.

@@ -10,6 +10,7 @@
 #include "scene/AssetFiles.h"
 #include "scene/GltfImporter.h"
 #include "scene/JsonNode.h"
+#include "scene/MeshSubdivision.h"
 #include "scene/NameIndex.h"
 #include "scene/ObjImporter.h"
 #include "scene/Primitives.h"
@@ -177,9 +178,7 @@ GltfMeshSelector readMeshSelector(const JsonNode& node) {
   node.fail("expected a mesh index or name, got " + node.typeName());
 }
 
-Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) {
-  node.expectObject({"name", "file", "mesh", "primitive"});
-  std::string name = meshes.add(node.at("name"));
+Mesh readMeshSource(const JsonNode& node, const fs::path& baseDir, std::string name) {
   const std::optional<JsonNode> pick = node.find("mesh");
   if (node.oneOf({"file", "primitive"}) == "primitive") {
     if (pick) pick->fail("\"mesh\" picks a mesh inside a glTF \"file\"; a primitive has none");
@@ -200,6 +199,19 @@ Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) 
            : importObj(path.value(), std::move(name));
   if (!mesh) file.fail(mesh.error());
   return std::move(mesh).value();
+}
+
+// A mesh entry: its source, then long edges split when "max_edge" asks for it.
+Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) {
+  node.expectObject({"name", "file", "mesh", "primitive", "max_edge"});
+  Mesh mesh = readMeshSource(node, baseDir, meshes.add(node.at("name")));
+  const std::optional<JsonNode> maxEdge = node.find("max_edge");
+  if (!maxEdge) return mesh;
+  std::optional<Mesh> split = subdivideLongEdges(mesh, static_cast<float>(maxEdge->positive()), kMaxVerticesPerScene / 3);
+  if (!split)
+    maxEdge->fail("splitting every edge longer than " + std::to_string(maxEdge->positive()) + " m would make more than " +
+                  std::to_string(kMaxVerticesPerScene / 3) + " triangles; use a larger max_edge");
+  return std::move(split).value();
 }
 
 Material readMaterial(const JsonNode& node, NameIndex& materials) {
@@ -240,15 +252,16 @@ AnalyticShape readAnalyticShape(const JsonNode& node) {
 MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
   node.expectObject({"curvature", "closed", "closed_twin", "analytic"});
   MirrorInfo mirror;
-  const JsonNode curvature = node.at("curvature");
-  if (curvature.string() == "convex")
-    mirror.curvature = MirrorCurvature::Convex;
-  else if (curvature.string() == "concave")
-    mirror.curvature = MirrorCurvature::Concave;
-  else if (curvature.string() == "mixed")
-    mirror.curvature = MirrorCurvature::Mixed;
-  else
-    curvature.fail("unknown curvature " + JsonNode::quoted(curvature.string()) + "; use convex, concave or mixed");
+  // Mixed (the default) lets the renderer split the mesh by its curvature (scene::MirrorParts).
+  mirror.curvature = MirrorCurvature::Mixed;
+  if (const std::optional<JsonNode> curvature = node.find("curvature")) {
+    if (curvature->string() == "convex")
+      mirror.curvature = MirrorCurvature::Convex;
+    else if (curvature->string() == "concave")
+      mirror.curvature = MirrorCurvature::Concave;
+    else if (curvature->string() != "mixed")
+      curvature->fail("unknown curvature " + JsonNode::quoted(curvature->string()) + "; use convex, concave or mixed");
+  }
   const std::optional<JsonNode> twin = node.find("closed_twin");
   const std::optional<JsonNode> closed = node.find("closed");
   mirror.closed = closed ? closed->boolean() : !twin;

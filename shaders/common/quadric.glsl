@@ -1,6 +1,7 @@
 // The exact surface of an analytic mirror (sphere, ellipsoid): where the eye's ray first meets it.
 // The G-buffer pass samples it per fragment; the search refines reflection points on it, so neither
 // depends on the mirror's mesh facets. Uniforms set by server/passes/QuadricUniforms.
+#include "common/clip-depth.glsl"
 
 uniform int analytic;             // 1: the mirror has the quadric below and it is closed
 uniform mat4 quadricWorldToObject;
@@ -15,6 +16,15 @@ vec3 toUnitSpace(vec3 world) { return ((quadricWorldToObject * vec4(world, 1.0))
 void quadricSurface(vec3 unitPoint, out vec3 position, out vec3 normal) {
   position = (quadricObjectToWorld * vec4(quadricCenter + unitPoint * quadricRadii, 1.0)).xyz;
   normal = normalize(quadricNormalToWorld * (unitPoint / quadricRadii));
+}
+
+// The uvSphere parametrisation of a world point on the quadric (reference/AnalyticSurface::uv):
+// (longitude, latitude) / (2π, π), longitude turning from +x towards −z.
+vec2 quadricUv(vec3 world) {
+  vec3 p = normalize(toUnitSpace(world));
+  float longitude = atan(-p.z, p.x);
+  if (longitude < 0.0) longitude += 6.28318530718;
+  return vec2(longitude / 6.28318530718, acos(clamp(-p.y, -1.0, 1.0)) / 3.14159265359);
 }
 
 // Whether the eye sees this point of the unit sphere (it lies on the eye's side of its tangent plane).

@@ -10,12 +10,17 @@ uniform sampler2DArray gbufferPosition;  // w > 0 on mirror texels
 uniform sampler2DArray gbufferNormal;
 uniform int layer;
 uniform int coarseLevel;       // pyramid level scanned exhaustively on a cold start
+uniform ivec4 coarseRect;      // the texels of that level the mirror covers: low x, y, high x, y (exclusive)
 uniform vec3 eyePosition;
 uniform int maxWalkSteps;
 
 const float kInvalid = -3.0;   // below any reflectionObjective
 const float kContactHeight = 1e-3;  // unit-sphere radii: closer vertices reflect from their foot point
 const float kStalledResidual = 0.1;  // normal and bisector still this far apart (sine): the refinement is lost
+// On a mesh the best point of a part whose reflection lies beyond its outline (hidden behind a
+// convex part's silhouette, or on another part) stops on the outline with normal and bisector this
+// far apart (sine): such a vertex has no reflection point in the part.
+const float kNoReflectionResidual = 0.05;
 const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
                                       ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
 
@@ -51,22 +56,63 @@ ivec2 climb(ivec2 texel, int level, int stepLimit, inout int steps, out float va
   return texel;
 }
 
-// Exhaustive scan of the coarse level, then one climb per finer level (children of the winner).
+// Exhaustive scan of the mirror's texels at the coarse level, keeping the best few coarse texels
+// that are not neighbours (a part whose normals wrap, like a bowl's outside with its rim, has more
+// than one local best: averaged coarse normals can rank the wrong one first), then one climb per
+// finer level from each; the best at level 0 wins. The level is the one where the mirror spans at
+// most 8 texels (16 on other mirrors than closed convex ones), so a small mirror is still seen in
+// parts whose normals differ.
+const int kMaxColdCandidates = 3;
+uniform int coldCandidates;  // 1 on a closed convex mirror (one best), kMaxColdCandidates otherwise
+
 ivec2 coldSearch(inout int steps, out float value) {
-  ivec2 size = textureSize(gbufferPosition, coarseLevel).xy;
-  ivec2 best = ivec2(0);
-  value = kInvalid;
-  for (int y = 0; y < size.y; ++y) {
-    for (int x = 0; x < size.x; ++x) {
-      float candidate = objectiveAt(ivec2(x, y), coarseLevel);
-      if (candidate > value) {
-        value = candidate;
-        best = ivec2(x, y);
+  ivec2 candidate[kMaxColdCandidates];
+  float candidateValue[kMaxColdCandidates];
+  for (int k = 0; k < kMaxColdCandidates; ++k) {
+    candidate[k] = coarseRect.xy;
+    candidateValue[k] = kInvalid;
+  }
+  for (int y = coarseRect.y; y < coarseRect.w; ++y) {
+    for (int x = coarseRect.x; x < coarseRect.z; ++x) {
+      float v = objectiveAt(ivec2(x, y), coarseLevel);
+      if (v <= candidateValue[coldCandidates - 1]) continue;
+      // Replace a kept neighbour it beats, else the worst kept; then restore the order.
+      int slot = coldCandidates - 1;
+      bool beaten = false;
+      for (int k = 0; k < coldCandidates; ++k) {
+        ivec2 apart = abs(candidate[k] - ivec2(x, y));
+        if (candidateValue[k] > kInvalid && max(apart.x, apart.y) <= 2) {
+          slot = k;
+          beaten = v <= candidateValue[k];
+          break;
+        }
+      }
+      if (beaten) continue;
+      candidate[slot] = ivec2(x, y);
+      candidateValue[slot] = v;
+      for (int k = slot; k > 0 && candidateValue[k] > candidateValue[k - 1]; --k) {
+        ivec2 t = candidate[k];
+        candidate[k] = candidate[k - 1];
+        candidate[k - 1] = t;
+        float tv = candidateValue[k];
+        candidateValue[k] = candidateValue[k - 1];
+        candidateValue[k - 1] = tv;
       }
     }
   }
-  steps += (size.x * size.y + 8) / 9;  // counted in 3×3 windows, like climb steps
-  for (int level = coarseLevel - 1; level >= 0; --level) best = climb(best * 2, level, maxWalkSteps, steps, value);
+  steps += ((coarseRect.z - coarseRect.x) * (coarseRect.w - coarseRect.y) + 8) / 9;  // in 3×3 windows, like climb steps
+  ivec2 best = candidate[0];
+  value = kInvalid;
+  for (int k = 0; k < coldCandidates; ++k) {
+    if (candidateValue[k] <= kInvalid) break;
+    ivec2 texel = candidate[k];
+    float reached = candidateValue[k];
+    for (int level = coarseLevel - 1; level >= 0; --level) texel = climb(texel * 2, level, maxWalkSteps, steps, reached);
+    if (reached > value) {
+      value = reached;
+      best = texel;
+    }
+  }
   return best;
 }
 
@@ -249,14 +295,17 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
   if ((flags & kReflectionUnsolved) != 0) {
     result.virtualPosition = vec4(0.0);
   } else {
-    // Behind the mirror: region C (Estalella et al. 2006, §5.1), exactly for an analytic mirror,
-    // else behind the tangent plane at the best point, where the climb has reached the silhouette.
+    // Behind the mirror: region C (Estalella et al. 2006, §5.1), exactly for an analytic mirror.
+    // On a mesh, the climb's best point must be a reflection point (normal along the bisector) with
+    // the vertex in front of its tangent plane; the tangent plane alone (the paper's test) holds
+    // only on convex mirrors: a concave part's best point on its rim can have the vertex in front.
     // A hidden vertex is mirrored across the silhouette's tangent plane (not the paper's eq. 1,
     // which lands inside the silhouette and smears), which projects it just outside; for an
     // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
     // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
     // which mirroring would magnify by about 2|V − R| at grazing reflection points.
-    bool hidden = analytic != 0 ? hiddenExactly : dot(vertexWorld - r, n) < 0.0;
+    bool hidden = analytic != 0 ? hiddenExactly
+                                : dot(vertexWorld - r, n) < 0.0 || length(tangentialBisector(r, n)) > kNoReflectionResidual;
     if (hidden) {
       flags |= kReflectionHidden;
       vec3 silhouette, silhouetteNormal;

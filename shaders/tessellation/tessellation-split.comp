@@ -41,6 +41,14 @@ uniform mat4 gbufferWorldToClip;
 uniform mat4 frameWorldToClip;
 uniform vec2 frameSize;
 uniform vec4 mirrorRect;  // the mirror's bounds on screen in frame pixels: low x, y, high x, y
+uniform vec4 mirrorSphere;  // the mirror's bounding sphere in world space: centre, radius
+uniform int convexPart;     // 1: a vertex without a reflection point in this part is hidden behind it
+
+// With the pixel metric, an edge longer than this share of its distance from the mirror (at least
+// the mirror's radius) splits whatever its midpoint shows: the reflection of a large triangle near a mirror bends inside
+// it, where no edge midpoint sees it (a table top under a bowl reflects all round the bowl's foot,
+// while its corners reflect near the rim).
+const float kMaxEdgeAngle = 0.5;
 
 const int kAngleMetricNever = 1;  // an angle error never exceeds 1: that threshold means no split
 
@@ -91,6 +99,13 @@ TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
   return makeTessellatedVertex(position, dot(normal, normal) > 0.0 ? normalize(normal) : normal, uv, reflection);
 }
 
+bool nearMirror(TessellatedVertex a, TessellatedVertex b) {
+  if (pixelMetric == 0) return false;  // Szabo's angle metric is kept as the paper has it
+  vec3 midpoint = 0.5 * (a.positionU.xyz + b.positionU.xyz);
+  float reach = max(length(midpoint - mirrorSphere.xyz), mirrorSphere.w);
+  return length(a.positionU.xyz - b.positionU.xyz) > kMaxEdgeAngle * reach;
+}
+
 bool exceeds(float error) { return pixelMetric != 0 || threshold < float(kAngleMetricNever) ? error >= threshold : false; }
 
 TessellatedVertex loadCorner(uint local, uint triangle, int k) {
@@ -108,11 +123,16 @@ void main() {
   uint local = gl_GlobalInvocationID.x;
   TessellatedVertex corner[3] = TessellatedVertex[3](loadCorner(local, triangle, 0), loadCorner(local, triangle, 1), loadCorner(local, triangle, 2));
   int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
+  bool near[3] = bool[3](nearMirror(corner[0], corner[1]), nearMirror(corner[1], corner[2]), nearMirror(corner[2], corner[0]));
+  bool anyNear = near[0] || near[1] || near[2];
   // The virtual-objects pass drops these whatever their size, and a virtual triangle wholly
   // outside the frame or the mirror's part of it is not seen: nothing to refine, unless full
-  // tessellation (threshold 0) was asked for.
-  bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 || (flags0 & flags1 & flags2 & kReflectionHidden) != 0 ||
-                 outsideMirrorRect(corner[0], corner[1], corner[2]);
+  // tessellation (threshold 0) was asked for. Corners hidden behind a convex part hide the whole
+  // triangle (region C is convex); a large triangle near the mirror may still show between corners
+  // whose images lie off the mirror's rectangle or, on other parts, have none.
+  bool dropped = ((flags0 | flags1 | flags2) & kReflectionUnsolved) != 0 ||
+                 (convexPart != 0 && (flags0 & flags1 & flags2 & kReflectionHidden) != 0) ||
+                 (!anyNear && outsideMirrorRect(corner[0], corner[1], corner[2]));
 
   // Which edges need their midpoint searched: every drawn edge longer than the pixel threshold
   // (its error depends on the search), or every edge the angle metric splits.
@@ -123,7 +143,8 @@ void main() {
     for (int e = 0; e < 3; ++e) {
       TessellatedVertex a = corner[e], b = corner[(e + 1) % 3];
       if (pixelMetric != 0)  // crack-free: an edge drawn shorter than the threshold cannot bend by more than it
-        search[e] = crackFree == 0 || threshold == 0.0 || length(framePixel(a.virtualFlags.xyz) - framePixel(b.virtualFlags.xyz)) >= threshold;
+        search[e] = crackFree == 0 || threshold == 0.0 || near[e] ||
+                    length(framePixel(a.virtualFlags.xyz) - framePixel(b.virtualFlags.xyz)) >= threshold;
       else
         error[e] = angleError(a, b);
     }
@@ -143,7 +164,7 @@ void main() {
   if (pixelMetric != 0) {
     float worst = max(error[0], max(error[1], error[2]));
     for (int e = 0; e < 3; ++e)
-      if (search[e] && (crackFree != 0 ? exceeds(error[e]) : exceeds(worst))) mask |= 1 << e;
+      if (search[e] && (crackFree != 0 ? exceeds(error[e]) || near[e] : exceeds(worst) || anyNear)) mask |= 1 << e;
   } else {
     for (int e = 0; e < 3; ++e)
       if (search[e]) mask |= 1 << e;

@@ -3,6 +3,9 @@
 // every corner has a reflection point, at least one is not hidden (region C), and the corners'
 // mirror normals are less than 90° apart: corners on far sides of a mirror, or on the inside and
 // outside of a bowl, belong to different reflections that one flat triangle cannot join.
+// On a concave or saddle part every corner must have its reflection point there: a corner without
+// one has no place on the part from which the triangle could be completed (on a convex part it is
+// mirrored just beyond the silhouette, where the triangle is cut off).
 #include "common/reflected-vertex.glsl"
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
@@ -16,6 +19,8 @@ in VertexData {
   flat int flags;
 } inVertex[];
 
+uniform int everyCornerReflected;  // 1 on concave and saddle parts
+
 out FragmentData {
   vec3 worldPosition;
   vec3 worldNormal;
@@ -27,6 +32,7 @@ void main() {
   int allFlags = inVertex[0].flags | inVertex[1].flags | inVertex[2].flags;
   int commonFlags = inVertex[0].flags & inVertex[1].flags & inVertex[2].flags;
   if ((allFlags & kReflectionUnsolved) != 0 || (commonFlags & kReflectionHidden) != 0) return;
+  if (everyCornerReflected != 0 && (allFlags & kReflectionHidden) != 0) return;
   for (int i = 0; i < 3; ++i)
     if (dot(inVertex[i].reflectionNormal, inVertex[(i + 1) % 3].reflectionNormal) < 0.0) return;
   for (int i = 0; i < 3; ++i) {

@@ -60,10 +60,19 @@ Mesh pearMesh() {
   return primitives::lathe("pear", profile, 32);
 }
 
+// The top surface is a grid of ~10 cm cells (Estalella's loader subdivided large geometry too): the
+// bowl's outer wall reflects the table all round its foot, where a coarse top has no vertex at all.
+// An odd number of cells each way puts the bowl at a cell's centre, so no vertex lies under its foot.
 Mesh tableMesh() {
   Mesh table{"table", {}, {}};
-  primitives::append(table, primitives::box("table-top", {1.6f, 0.04f, 0.9f}),
-                     placed({0.0f, kTableTop - 0.02f, 0.0f}).matrix());
+  Mesh slab = primitives::box("table-top", {1.6f, 0.04f, 0.9f});
+  std::vector<std::uint32_t> sidesAndBottom;
+  for (std::size_t t = 0; t < slab.triangleCount(); ++t)
+    if (slab.vertices[slab.indices[3 * t]].normal.y < 0.5f)
+      sidesAndBottom.insert(sidesAndBottom.end(), slab.indices.begin() + 3 * t, slab.indices.begin() + 3 * t + 3);
+  slab.indices = std::move(sidesAndBottom);
+  primitives::append(table, slab, placed({0.0f, kTableTop - 0.02f, 0.0f}).matrix());
+  primitives::append(table, primitives::grid("table-surface", 1.6f, 0.9f, 15, 9), placed({0.0f, kTableTop, 0.0f}).matrix());
   for (const float x : {-0.72f, 0.72f})
     for (const float z : {-0.38f, 0.38f})
       primitives::append(table, primitives::box("table-leg", {0.05f, kTableTop - 0.04f, 0.05f}),

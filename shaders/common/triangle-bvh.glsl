@@ -1,0 +1,75 @@
+// The nearest hit of a ray with a mirror's own mesh through its bounding-volume hierarchy: the
+// GLSL twin of math::TriangleBvh::intersect (same layout, same Möller–Trumbore test).
+
+struct BvhNode {
+  vec3 low;
+  uint first;  // inner node: first of its two children; leaf: its first triangle
+  vec3 high;
+  uint count;  // triangles of a leaf; 0 for an inner node
+};
+struct BvhTriangle {
+  vec3 a;
+  uint index;  // the triangle in the mesh
+  vec3 b;
+  float unused0;
+  vec3 c;
+  float unused1;
+};
+
+layout(std430, binding = 4) readonly buffer BvhNodes {
+  BvhNode bvhNodes[];
+};
+layout(std430, binding = 5) readonly buffer BvhTriangles {
+  BvhTriangle bvhTriangles[];
+};
+
+const int kBvhStackSize = 32;  // math::TriangleBvh::kMaxDepth
+
+bool bvhBoxHit(BvhNode node, vec3 origin, vec3 inverseDirection, float tMin, float tMax) {
+  vec3 t0 = (node.low - origin) * inverseDirection, t1 = (node.high - origin) * inverseDirection;
+  vec3 near = min(t0, t1), far = max(t0, t1);
+  return max(max(near.x, near.y), max(near.z, tMin)) <= min(min(far.x, far.y), min(far.z, tMax));
+}
+
+// Distance (in units of `direction`) in (tMin, tMax), the mesh's triangle and the barycentric
+// weights of its second and third corners; false when nothing is hit.
+bool intersectBvh(vec3 origin, vec3 direction, float tMin, float tMax, out float distance, out uint triangle,
+                  out vec2 barycentric) {
+  vec3 inverseDirection = 1.0 / direction;
+  uint stack[kBvhStackSize];
+  int depth = 0;
+  stack[depth++] = 0u;
+  bool hit = false;
+  while (depth > 0) {
+    BvhNode node = bvhNodes[stack[--depth]];
+    if (!bvhBoxHit(node, origin, inverseDirection, tMin, tMax)) continue;
+    if (node.count == 0u) {
+      if (depth + 2 > kBvhStackSize) continue;  // cannot happen for a tree built within kMaxDepth
+      stack[depth++] = node.first;
+      stack[depth++] = node.first + 1u;
+      continue;
+    }
+    for (uint i = node.first; i < node.first + node.count; ++i) {
+      BvhTriangle candidate = bvhTriangles[i];
+      vec3 e1 = candidate.b - candidate.a, e2 = candidate.c - candidate.a;
+      vec3 p = cross(direction, e2);
+      float determinant = dot(e1, p);
+      if (determinant == 0.0) continue;
+      float inverseDeterminant = 1.0 / determinant;
+      vec3 s = origin - candidate.a;
+      float u = dot(s, p) * inverseDeterminant;
+      if (u < 0.0 || u > 1.0) continue;
+      vec3 q = cross(s, e1);
+      float v = dot(direction, q) * inverseDeterminant;
+      if (v < 0.0 || u + v > 1.0) continue;
+      float t = dot(e2, q) * inverseDeterminant;
+      if (t <= tMin || t >= tMax) continue;
+      tMax = t;
+      distance = t;
+      triangle = candidate.index;
+      barycentric = vec2(u, v);
+      hit = true;
+    }
+  }
+  return hit;
+}

@@ -1,0 +1,63 @@
+#version 430 core
+// Where a mirror part's reflected ray meets the mirror itself (a bowl's inside reflecting its far
+// wall), the mirror shows its own shaded colour at the depth of that reflection, like a virtual
+// object: nearer virtual objects still win, and what lies behind the mirror in its own reflection
+// stays hidden. The ray is cast per pixel from the G-buffer point against the mirror's own mesh,
+// as the ray tracer does with one bounce.
+#include "common/clip-depth.glsl"
+#include "common/gbuffer-texel.glsl"
+#include "common/shading.glsl"
+#include "common/triangle-bvh.glsl"
+
+uniform sampler2DArray gbufferPosition;  // w > 0 on this part's texels
+uniform sampler2DArray gbufferNormal;
+uniform int layer;
+uniform vec3 eyePosition;
+uniform mat4 objectToWorld;
+uniform mat4 worldToObject;
+uniform mat3 normalToWorld;
+uniform mat4 worldToClip;     // the virtual objects' projection (far plane pushed out)
+uniform float minDistance;    // object space: nearer hits are the surface the ray starts on
+uniform float reflectivity;
+uniform int depthOnly;
+
+layout(std430, binding = 6) readonly buffer MeshVertices {
+  float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
+};
+layout(std430, binding = 7) readonly buffer MeshIndices {
+  uint meshIndex[];
+};
+
+layout(location = 0) out vec4 outColor;
+
+vec3 attribute3(uint vertex, uint offset) {
+  uint at = 8u * vertex + offset;
+  return vec3(meshVertex[at], meshVertex[at + 1u], meshVertex[at + 2u]);
+}
+
+void main() {
+  ivec2 texel = gbufferTexelAt(gl_FragCoord.xy);
+  vec4 surface = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
+  if (surface.w <= 0.0) discard;
+  vec3 normal = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
+  vec3 incoming = normalize(surface.xyz - eyePosition);
+  vec3 reflected = reflect(incoming, normal);
+  float distance;
+  uint triangle;
+  vec2 barycentric;
+  if (!intersectBvh((worldToObject * vec4(surface.xyz, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, 1e30,
+                    distance, triangle, barycentric))
+    discard;
+  uint i0 = meshIndex[3u * triangle], i1 = meshIndex[3u * triangle + 1u], i2 = meshIndex[3u * triangle + 2u];
+  vec3 weights = vec3(1.0 - barycentric.x - barycentric.y, barycentric);
+  vec3 position = weights.x * attribute3(i0, 0u) + weights.y * attribute3(i1, 0u) + weights.z * attribute3(i2, 0u);
+  vec3 hitNormal = weights.x * attribute3(i0, 3u) + weights.y * attribute3(i1, 3u) + weights.z * attribute3(i2, 3u);
+  vec2 uv = weights.x * vec2(meshVertex[8u * i0 + 6u], meshVertex[8u * i0 + 7u]) +
+            weights.y * vec2(meshVertex[8u * i1 + 6u], meshVertex[8u * i1 + 7u]) +
+            weights.z * vec2(meshVertex[8u * i2 + 6u], meshVertex[8u * i2 + 7u]);
+  vec3 hit = (objectToWorld * vec4(position, 1.0)).xyz;
+  // On the eye's ray through the mirror point, a whole path length away, like a virtual vertex.
+  float path = length(surface.xyz - eyePosition) + length(hit - surface.xyz);
+  gl_FragDepth = clipDepth(worldToClip, eyePosition + path * incoming);
+  outColor = depthOnly != 0 ? vec4(0.0) : vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface.xyz), 1.0);
+}

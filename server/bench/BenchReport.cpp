@@ -79,6 +79,7 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"ssim", c ? number(c->ssim, 4) : ""});
   f.push_back({"mirror_mismatch", c ? number(c->mirrorMismatch, 4) : ""});
   f.push_back({"raytrace_ms", c ? number(c->rayTraceMilliseconds, 1) : ""});
+  f.push_back({"frame_vs_raytrace", optionalNumber(r.timeVersusRayTrace(), 3)});
   return f;
 }
 
@@ -312,8 +313,8 @@ std::string formatJson(std::span<const SceneBenchResult> results) {
 std::string formatTable(std::span<const SceneBenchResult> results) {
   std::string table;
   char line[512];
-  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-26s | %-20s | %8s\n", "scene", "frame ms", "fps",
-                "first", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms");
+  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-26s | %-20s | %8s %8s\n", "scene", "frame ms", "fps",
+                "first", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms", "x trace");
   table += line;
   for (const SceneBenchResult& r : results) {
     const auto& e = r.pointError;
@@ -322,10 +323,11 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
                               orDash(r.coldStepsLarge ? number(r.coldStepsLarge->mean, 1) : "");
     const std::string error = e ? significant(e->mean) + "/" + significant(e->p99) + "/" + significant(e->maximum) : "-";
     const std::string image = c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
-    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s | %-17s | %-26s | %-20s | %8s\n", r.scene.c_str(),
+    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s | %-17s | %-26s | %-20s | %8s %8s\n", r.scene.c_str(),
                   number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
                   number(r.firstFrameMilliseconds, 0).c_str(), steps.c_str(), error.c_str(), image.c_str(),
-                  orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str());
+                  orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str(),
+                  orDash(optionalNumber(r.timeVersusRayTrace(), 2)).c_str());
     table += line;
     std::string passes = "  passes (median ms):";
     for (const render::StageTiming& stage : r.stageMedians) passes += " " + stage.name + " " + number(stage.milliseconds, 2);

@@ -59,6 +59,13 @@ struct SceneBenchResult {
     double rayTraceMilliseconds = 0.0;
   };
   std::optional<ReferenceComparison> reference;
+
+  // The frame time as a multiple of the ray tracer's for the same frame (below 1: faster than
+  // exact ray tracing on this machine); absent without the reference.
+  std::optional<double> timeVersusRayTrace() const {
+    if (!reference || reference->rayTraceMilliseconds <= 0.0) return std::nullopt;
+    return frameMedianMilliseconds / reference->rayTraceMilliseconds;
+  }
 };
 
 // Measures `scene` on `context` (which must be current on this thread).

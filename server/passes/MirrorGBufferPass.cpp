@@ -90,7 +90,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
     const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror->mirrorObject];
     const scene::MirrorInfo& info = *frame.scene.objects[mirror->mirrorObject].mirror;
-    if (hasExactQuadric(info)) {
+    if (info.exactQuadric()) {
       quadric_.use();
       setMirrorQuadric(quadric_, info, objectToWorld);
       gl.BindVertexArray(emptyVertexArray_.id());

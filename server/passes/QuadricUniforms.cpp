@@ -4,10 +4,8 @@
 
 namespace specula::passes {
 
-bool hasExactQuadric(const scene::MirrorInfo& mirror) { return mirror.analytic.has_value() && mirror.closed; }
-
 void setMirrorQuadric(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror, const glm::mat4& objectToWorld) {
-  const bool analytic = hasExactQuadric(mirror);
+  const bool analytic = mirror.exactQuadric();
   program.set("analytic", analytic ? 1 : 0);
   if (!analytic) return;
   program.set("quadricWorldToObject", glm::inverse(objectToWorld));

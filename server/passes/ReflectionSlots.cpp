@@ -12,7 +12,7 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
     if (!object.mirror || scene.materials[object.material].reflectivity <= 0.0f) continue;
     ++stencil;
     const scene::MirrorInfo& info = *object.mirror;
-    const bool exactQuadric = hasExactQuadric(info);
+    const bool exactQuadric = info.exactQuadric();
     scene::MirrorParts parts{{scene::MirrorPart{scene::SurfaceKind::Convex, 0}}, {}};
     if (!exactQuadric) {
       parts = scene::MirrorParts::of(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], info.curvature);

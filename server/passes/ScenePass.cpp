@@ -53,7 +53,7 @@ void ScenePass::execute(const FrameContext& frame) {
   }
   for (std::size_t i = 0; i < frame.scene.objects.size(); ++i) {
     const scene::SceneObject& object = frame.scene.objects[i];
-    const bool quadric = object.mirror && hasExactQuadric(*object.mirror);
+    const bool quadric = object.mirror && object.mirror->exactQuadric();
     const gl::ShaderProgram& program = quadric ? quadric_ : program_;
     program.use();
     program.set("objectToWorld", frame.pose.objectToWorld[i]);

@@ -73,7 +73,7 @@ Result<std::unique_ptr<PosedScene>> PosedScene::build(RTCDevice device, const sc
     const scene::SceneObject& object = scene.objects[i];
     Geometry geometry{i, std::nullopt, &scene.meshes[object.mesh], nullptr, math::normalMatrix(pose.objectToWorld[i])};
     // An open mirror's shape would also cover where the mesh has no surface, so only closed ones use it.
-    if (object.mirror && object.mirror->analytic && object.mirror->closed)
+    if (object.mirror && object.mirror->exactQuadric())
       geometry.analytic.emplace(*object.mirror->analytic, pose.objectToWorld[i]);
     else if (geometry.mesh->triangleCount() == 0)
       continue;

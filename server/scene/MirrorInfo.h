@@ -15,6 +15,10 @@ struct AnalyticShape {
   Kind kind = Kind::Sphere;
   glm::vec3 center{0.0f};
   glm::vec3 radii{1.0f};  // a sphere has three equal radii
+  // true: the quadric is the mirror's surface for the renderer and the ray tracer (its mesh only
+  // bounds it); false: the mesh is the surface, and the quadric is only the exact answer that
+  // reflection-point errors are measured against (a tessellated sphere).
+  bool exactSurface = true;
 };
 
 // What makes an object a mirror. Open mirrors (a bowl, a half-pipe) are searched on a closed twin mesh.
@@ -23,6 +27,10 @@ struct MirrorInfo {
   bool closed = true;
   std::optional<std::uint32_t> closedTwinMesh;  // index into Scene::meshes; set exactly when !closed
   std::optional<AnalyticShape> analytic;
+
+  // Whether renderer and ray tracer use the analytic quadric as the surface: a closed mirror whose
+  // shape says so (an open one's quadric would cover where its mesh has no surface).
+  bool exactQuadric() const { return analytic && analytic->exactSurface && closed; }
 };
 
 }  // namespace specula::scene

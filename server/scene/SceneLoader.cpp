@@ -232,7 +232,7 @@ Material readMaterial(const JsonNode& node, NameIndex& materials) {
 }
 
 AnalyticShape readAnalyticShape(const JsonNode& node) {
-  node.expectObject({"sphere", "ellipsoid"});
+  node.expectObject({"sphere", "ellipsoid", "exact_surface"});
   const std::string_view kind = node.oneOf({"sphere", "ellipsoid"});
   const JsonNode body = node.at(kind);
   AnalyticShape shape;
@@ -246,6 +246,7 @@ AnalyticShape readAnalyticShape(const JsonNode& node) {
     shape.radii = readPositiveVec3(body.at("radii"));
   }
   if (const auto center = body.find("center")) shape.center = center->vec3();
+  if (const auto exact = node.find("exact_surface")) shape.exactSurface = exact->boolean();
   return shape;
 }
 

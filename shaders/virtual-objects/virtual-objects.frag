@@ -21,26 +21,49 @@ uniform vec3 eyePosition;
 // A fragment whose object point lies further than this (sine of the angle) off the pixel's
 // reflected ray belongs to a triangle stretched across two images of a concave part.
 const float kOffRaySine = 0.2;
+// The object point is moved onto the pixel's reflected ray only by a small step (a share of its
+// distance from the mirror) and where the ray meets the surface's plane at more than a grazing angle.
+const float kMaxCorrection = 0.05;
+const float kMinIncidence = 0.05;
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  if (partMask != 0 || rayCheck != 0) {
-    ivec3 texel = ivec3(gbufferTexelAt(gl_FragCoord.xy), layer);
-    vec4 surface = texelFetch(gbufferPosition, texel, 0);
-    // Each part of a mirror shows its own reflection: its virtual triangles end at its outline.
-    if (surface.w <= 0.0) discard;
-    if (rayCheck != 0) {
-      vec3 reflected = reflect(normalize(surface.xyz - eyePosition), normalize(texelFetch(gbufferNormal, texel, 0).xyz));
-      vec3 toObject = inFragment.worldPosition - surface.xyz;
-      if (length(cross(reflected, toObject)) > kOffRaySine * length(toObject) || dot(reflected, toObject) <= 0.0) discard;
+  // The object point and uv are affine over the triangle: their screen derivatives (taken before any
+  // discard, in uniform control flow) map a step in the surface's plane to a step in uv.
+  vec3 point = inFragment.worldPosition;
+  vec2 uv = inFragment.surfaceUv;
+  vec3 pointDx = dFdx(point), pointDy = dFdy(point);
+  vec2 uvDx = dFdx(uv), uvDy = dFdy(uv);
+
+  ivec3 texel = ivec3(gbufferTexelAt(gl_FragCoord.xy), layer);
+  vec4 surface = texelFetch(gbufferPosition, texel, 0);
+  // Each part of a mirror shows its own reflection: its virtual triangles end at its outline.
+  if (partMask != 0 && surface.w <= 0.0) discard;
+  if (surface.w > 0.0) {
+    vec3 reflected = reflect(normalize(surface.xyz - eyePosition), normalize(texelFetch(gbufferNormal, texel, 0).xyz));
+    vec3 toObject = point - surface.xyz;
+    if (rayCheck != 0 && (length(cross(reflected, toObject)) > kOffRaySine * length(toObject) || dot(reflected, toObject) <= 0.0))
+      discard;
+    // The rasterized triangle is flat between its corners' exact reflections, so inside it the object
+    // point is off by up to the tessellation threshold, many checker cells where a floor is seen
+    // nearly edge-on. The pixel's own reflected ray meets the surface's tangent plane at the point the
+    // ray tracer shades: move there (exact for flat surfaces), and the uv with it.
+    vec3 normal = normalize(inFragment.worldNormal);
+    float incidence = dot(reflected, normal);
+    if (abs(incidence) > kMinIncidence) {
+      vec3 step = reflected * (dot(toObject, normal) / incidence) - toObject;
+      mat2 gram = mat2(dot(pointDx, pointDx), dot(pointDx, pointDy), dot(pointDx, pointDy), dot(pointDy, pointDy));
+      if (length(step) < kMaxCorrection * length(toObject) && abs(determinant(gram)) > 1e-30) {
+        vec2 screenStep = inverse(gram) * vec2(dot(step, pointDx), dot(step, pointDy));
+        point += step;
+        uv += screenStep.x * uvDx + screenStep.y * uvDy;
+      }
     }
   }
   if (depthOnly != 0) {
     outColor = vec4(0.0);
     return;
   }
-  vec3 color = shadeSurface(inFragment.worldPosition, inFragment.worldNormal, inFragment.surfaceUv,
-                            inFragment.reflectionPoint);
-  outColor = vec4(reflectivity * color, 1.0);
+  outColor = vec4(reflectivity * shadeSurface(point, inFragment.worldNormal, uv, inFragment.reflectionPoint), 1.0);
 }

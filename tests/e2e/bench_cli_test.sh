@@ -15,7 +15,7 @@ check "the table lists the passes" grep -q "passes (median ms): scene .* search 
 check "the CSV has a header and two rows" test "$(wc -l <"$work/b.csv")" -eq 3
 columns=$(head -1 "$work/b.csv" | tr ',' '\n' | wc -l)
 check "every CSV row has the header's columns" awk -F, -v n="$columns" 'NF != n { exit 1 }' "$work/b.csv"
-for column in frame_ms_median search_ms steps_warm_mean steps_cold_large_max point_error_p99_px psnr_db ssim raytrace_ms; do
+for column in frame_ms_median search_ms steps_warm_mean steps_cold_large_max point_error_p99_px psnr_db ssim raytrace_ms frame_vs_raytrace; do
   check "the CSV has column $column" grep -q "\(^\|,\)$column\(,\|$\)" <(head -1 "$work/b.csv")
 done
 # Column values by name, so the checks do not depend on column order.

@@ -52,7 +52,19 @@ TEST(BenchReport, CsvHasOneColumnSetAndEmptyCellsWhereNothingWasMeasured) {
   EXPECT_NE(rows[0].find(",fps,"), std::string::npos);
   EXPECT_NE(rows[1].find(",50.0,"), std::string::npos) << "fps = 1000 / 20 ms: " << rows[1];
   EXPECT_NE(rows[1].find(",0.5,1.25,"), std::string::npos) << rows[1];
-  EXPECT_EQ(rows[2].substr(rows[2].size() - 4), ",,,,") << "no reference: four empty cells at the end";
+  EXPECT_EQ(rows[2].substr(rows[2].size() - 5), ",,,,,") << "no reference: five empty cells at the end";
+}
+
+TEST(BenchReport, FrameTimeIsAlsoGivenAsAMultipleOfTheRayTracers) {
+  const std::vector<bench::SceneBenchResult> results = {measured("sphere")};  // 20 ms against 44 ms
+  ASSERT_TRUE(results[0].timeVersusRayTrace());
+  EXPECT_NEAR(*results[0].timeVersusRayTrace(), 20.0 / 44.0, 1e-12);
+  const auto csv = lines(bench::formatCsv(results));
+  EXPECT_NE(csv[0].find(",raytrace_ms,frame_vs_raytrace"), std::string::npos) << csv[0];
+  EXPECT_EQ(csv[1].substr(csv[1].size() - 6), ",0.455") << csv[1];
+  const auto table = lines(bench::formatTable(results));
+  EXPECT_NE(table[0].find("x trace"), std::string::npos) << table[0];
+  EXPECT_NE(table[1].find(" 0.45"), std::string::npos) << table[1];
 }
 
 TEST(BenchReport, JsonWritesNullForMissingValuesAndEscapesNames) {

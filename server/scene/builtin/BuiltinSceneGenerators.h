@@ -5,6 +5,7 @@
 namespace specula::scene::builtin {
 
 Scene checkerSphereScene();
+Scene meshSphereScene();
 Scene kitchenScene();
 Scene ufoScene();
 Scene antsScene();

@@ -18,6 +18,8 @@ struct Entry {
 constexpr std::array kEntries{
     Entry{"checker-sphere", "mirror sphere of radius 1 over an unlit 16 m checker floor; the camera orbits",
           builtin::checkerSphereScene},
+    Entry{"mesh-sphere", "checker-sphere with its mirror as what real mirrors are, a 128x64 mesh (the sphere only measures it)",
+          builtin::meshSphereScene},
     Entry{"kitchen", "metal bowl (mixed curvature) on a kitchen table with fruit, cup and bottle (~15k vertices)",
           builtin::kitchenScene},
     Entry{"ufo", "spinning mirror saucer descending over a city square with driving trucks (~80k vertices)",

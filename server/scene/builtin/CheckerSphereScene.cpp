@@ -5,7 +5,9 @@
 
 namespace specula::scene::builtin {
 
-Scene checkerSphereScene() {
+namespace {
+
+Scene checkerSphere(bool exactSurface) {
   Scene scene;
   scene.ambient = glm::vec3(0.0f);
   scene.background = glm::vec3(0.0f);
@@ -16,6 +18,7 @@ Scene checkerSphereScene() {
                       addMaterial(scene, perfectMirror("mirror")), 1.0f, {});
   // The only mirror is a convex sphere, which can never show itself.
   scene.objects[sphere].reflected = false;
+  scene.objects[sphere].mirror->analytic->exactSurface = exactSurface;
 
   // Translating only in y keeps uv = world (x, z), so checker cells are world-aligned unit squares.
   addObject(scene, "floor", addMesh(scene, primitives::grid("floor", 16.0f, 16.0f, 16, 16)),
@@ -24,5 +27,12 @@ Scene checkerSphereScene() {
   scene.animations.push_back({std::nullopt, Orbit{glm::vec3(0.0f), {0.0f, 1.0f, 0.0f}, 20.0}});
   return scene;
 }
+
+}  // namespace
+
+Scene checkerSphereScene() { return checkerSphere(true); }
+
+// The same sphere as the general case, a mesh: the quadric only measures its reflection points.
+Scene meshSphereScene() { return checkerSphere(false); }
 
 }  // namespace specula::scene::builtin

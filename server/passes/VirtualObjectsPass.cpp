@@ -125,6 +125,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     objects->set("gbufferPosition", 0);
     objects->set("gbufferNormal", 1);
     objects->set("eyePosition", frame.pose.camera.eye);
+    objects->set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
     setGBufferPixelMapping(*objects, frame.reflections);
     setSceneLighting(*objects, frame.scene);
   }
@@ -135,13 +136,8 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     const MirrorSlots* mirror = frame.plan.mirrors[i];
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
-    const int convex = mirror->kind == scene::SurfaceKind::Convex ? 1 : 0;
     setForBoth("layer", mirror->layer);
-    setForBoth("partMask", mirror->partCount > 1 ? 1 : 0);
-    // A convex part's hidden corners are mirrored just beyond its silhouette; on a mirror of several
-    // parts the part's outline is not a silhouette, so its fragments are checked like a concave part's.
-    setForBoth("rayCheck", convex == 0 || mirror->partCount > 1 ? 1 : 0);
-    setForBoth("everyCornerReflected", 1 - convex);
+    setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
     setForBoth("reflectivity", reflectivity);
     if (mirror->part == 0) resetMirrorDepth(frame);
 

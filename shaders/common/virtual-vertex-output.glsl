@@ -7,19 +7,17 @@ out VertexData {
   vec3 worldPosition;
   vec3 worldNormal;
   vec2 surfaceUv;
-  vec3 reflectionPoint;  // where the eye sees this vertex: the viewer for its shading
   vec3 reflectionNormal;
   flat int flags;
 } outVertex;
 
 invariant gl_Position;  // the depth pre-pass and the shading pass must produce equal depths
 
-void emitVirtualVertex(vec3 worldPosition, vec3 worldNormal, vec2 uv, vec3 virtualPosition, vec3 reflectionPoint,
-                       vec3 reflectionNormal, int flags) {
+void emitVirtualVertex(vec3 worldPosition, vec3 worldNormal, vec2 uv, vec3 virtualPosition, vec3 reflectionNormal,
+                       int flags) {
   outVertex.worldPosition = worldPosition;
   outVertex.worldNormal = worldNormal;
   outVertex.surfaceUv = uv;
-  outVertex.reflectionPoint = reflectionPoint;
   outVertex.reflectionNormal = reflectionNormal;
   outVertex.flags = flags;
   gl_Position = worldToClip * vec4(virtualPosition, 1.0);

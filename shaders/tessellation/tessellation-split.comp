@@ -82,9 +82,13 @@ bool outsideMirrorRect(TessellatedVertex a, TessellatedVertex b, TessellatedVert
   return any(lessThan(high, mirrorRect.xy)) || any(greaterThan(low, mirrorRect.zw));
 }
 
+// A midpoint without a reflection point (off the G-buffer) would only cut its triangle into pieces
+// the virtual-objects pass drops.
+bool solved(TessellatedVertex midpoint) { return (int(midpoint.virtualFlags.w) & kReflectionUnsolved) == 0; }
+
 // How far the rasterizer draws the edge midpoint from where its true reflection projects.
 float pixelError(TessellatedVertex a, TessellatedVertex b, TessellatedVertex midpoint) {
-  if ((int(midpoint.virtualFlags.w) & kReflectionUnsolved) != 0) return 0.0;  // splitting cannot help
+  if (!solved(midpoint)) return 0.0;  // splitting cannot help
   return length(framePixel(midpoint.virtualFlags.xyz) - framePixel(0.5 * (a.virtualFlags.xyz + b.virtualFlags.xyz)));
 }
 
@@ -164,7 +168,8 @@ void main() {
   if (pixelMetric != 0) {
     float worst = max(error[0], max(error[1], error[2]));
     for (int e = 0; e < 3; ++e)
-      if (search[e] && (crackFree != 0 ? exceeds(error[e]) || near[e] : exceeds(worst) || anyNear)) mask |= 1 << e;
+      if (search[e] && (crackFree != 0 ? exceeds(error[e]) || near[e] : exceeds(worst) || anyNear) && solved(split.midpoint[e]))
+        mask |= 1 << e;
   } else {
     for (int e = 0; e < 3; ++e)
       if (search[e]) mask |= 1 << e;

@@ -4,7 +4,7 @@
 // object: nearer virtual objects still win, and what lies behind the mirror in its own reflection
 // stays hidden. The ray is cast per pixel from the G-buffer point against the mirror's own mesh,
 // as the ray tracer does with one bounce.
-#include "common/clip-depth.glsl"
+#include "common/virtual-depth.glsl"
 #include "common/gbuffer-texel.glsl"
 #include "common/shading.glsl"
 #include "common/triangle-bvh.glsl"
@@ -58,6 +58,6 @@ void main() {
   vec3 hit = (objectToWorld * vec4(position, 1.0)).xyz;
   // On the eye's ray through the mirror point, a whole path length away, like a virtual vertex.
   float path = length(surface.xyz - eyePosition) + length(hit - surface.xyz);
-  gl_FragDepth = clipDepth(worldToClip, eyePosition + path * incoming);
+  gl_FragDepth = virtualDepth(worldToClip, eyePosition + path * incoming, false);
   outColor = depthOnly != 0 ? vec4(0.0) : vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface.xyz), 1.0);
 }

@@ -12,6 +12,6 @@ layout(std430, binding = 3) readonly buffer TessellatedTriangles {
 
 void main() {
   TessellatedVertex v = records[gl_VertexID];
-  emitVirtualVertex(v.positionU.xyz, v.normalV.xyz, vec2(v.positionU.w, v.normalV.w), v.virtualFlags.xyz,
-                    v.reflectionTexelX.xyz, v.normalTexelY.xyz, int(v.virtualFlags.w));
+  emitVirtualVertex(v.positionU.xyz, v.normalV.xyz, vec2(v.positionU.w, v.normalV.w), v.virtualFlags.xyz, v.normalTexelY.xyz,
+                    int(v.virtualFlags.w));
 }

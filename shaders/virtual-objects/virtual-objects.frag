@@ -1,12 +1,20 @@
 #version 430 core
-#include "common/shading.glsl"
+// A virtual triangle only proposes which pixels its object triangle may show in: each fragment
+// casts its pixel's reflected ray (from the mirror's G-buffer point and normal, as the ray tracer
+// reflects) against the triangle itself and keeps the exact hit, shaded there and placed at its
+// exact path length. The rasterized triangle is flat between its corners' reflections, so without
+// this the object point inside it is off by up to the tessellation threshold (many checker cells
+// where a floor is seen nearly edge-on), and on a concave part a triangle can stretch across two
+// images; with it, only coverage (which pixels a triangle is tried at) remains approximate.
+#include "common/virtual-depth.glsl"
 #include "common/gbuffer-texel.glsl"
+#include "common/shading.glsl"
 
 in FragmentData {
   vec3 worldPosition;
   vec3 worldNormal;
   vec2 surfaceUv;
-  vec3 reflectionPoint;
+  flat vec3 corner[3];
 } inFragment;
 
 uniform float reflectivity;  // the mirror's; its surface colour was already weighted by 1 − reflectivity
@@ -14,56 +22,58 @@ uniform int depthOnly;       // 1 in the depth pre-pass: only the nearest virtua
 uniform sampler2DArray gbufferPosition;  // w > 0 on this part's texels
 uniform sampler2DArray gbufferNormal;
 uniform int layer;           // the part's G-buffer layer
-uniform int partMask;        // 1: the mirror has several parts, and this one shows only on its own texels
-uniform int rayCheck;        // 1 on concave and saddle parts: fragments must lie on this pixel's reflected ray
 uniform vec3 eyePosition;
+uniform mat4 worldToClip;    // the virtual objects' projection (far plane pushed out)
 
-// A fragment whose object point lies further than this (sine of the angle) off the pixel's
-// reflected ray belongs to a triangle stretched across two images of a concave part.
-const float kOffRaySine = 0.2;
-// The object point is moved onto the pixel's reflected ray only by a small step (a share of its
-// distance from the mirror) and where the ray meets the surface's plane at more than a grazing angle.
-const float kMaxCorrection = 0.05;
-const float kMinIncidence = 0.05;
+// A hit this share of the triangle's longest edge outside it still counts: float rounding on the
+// edge two triangles share must not leave a pixel to neither.
+const float kEdgeTolerance = 1e-4;
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  // The object point and uv are affine over the triangle: their screen derivatives (taken before any
-  // discard, in uniform control flow) map a step in the surface's plane to a step in uv.
+  // Position, normal and uv are affine over the triangle: their screen derivatives (taken before any
+  // discard, in uniform control flow) carry them from the rasterized point to the exact hit.
   vec3 point = inFragment.worldPosition;
-  vec2 uv = inFragment.surfaceUv;
   vec3 pointDx = dFdx(point), pointDy = dFdy(point);
-  vec2 uvDx = dFdx(uv), uvDy = dFdy(uv);
+  vec3 normalDx = dFdx(inFragment.worldNormal), normalDy = dFdy(inFragment.worldNormal);
+  vec2 uvDx = dFdx(inFragment.surfaceUv), uvDy = dFdy(inFragment.surfaceUv);
 
   ivec3 texel = ivec3(gbufferTexelAt(gl_FragCoord.xy), layer);
   vec4 surface = texelFetch(gbufferPosition, texel, 0);
-  // Each part of a mirror shows its own reflection: its virtual triangles end at its outline.
-  if (partMask != 0 && surface.w <= 0.0) discard;
-  if (surface.w > 0.0) {
-    vec3 reflected = reflect(normalize(surface.xyz - eyePosition), normalize(texelFetch(gbufferNormal, texel, 0).xyz));
-    vec3 toObject = point - surface.xyz;
-    if (rayCheck != 0 && (length(cross(reflected, toObject)) > kOffRaySine * length(toObject) || dot(reflected, toObject) <= 0.0))
-      discard;
-    // The rasterized triangle is flat between its corners' exact reflections, so inside it the object
-    // point is off by up to the tessellation threshold, many checker cells where a floor is seen
-    // nearly edge-on. The pixel's own reflected ray meets the surface's tangent plane at the point the
-    // ray tracer shades: move there (exact for flat surfaces), and the uv with it.
-    vec3 normal = normalize(inFragment.worldNormal);
-    float incidence = dot(reflected, normal);
-    if (abs(incidence) > kMinIncidence) {
-      vec3 step = reflected * (dot(toObject, normal) / incidence) - toObject;
-      mat2 gram = mat2(dot(pointDx, pointDx), dot(pointDx, pointDy), dot(pointDx, pointDy), dot(pointDy, pointDy));
-      if (length(step) < kMaxCorrection * length(toObject) && abs(determinant(gram)) > 1e-30) {
-        vec2 screenStep = inverse(gram) * vec2(dot(step, pointDx), dot(step, pointDy));
-        point += step;
-        uv += screenStep.x * uvDx + screenStep.y * uvDy;
-      }
-    }
-  }
+  if (surface.w <= 0.0) discard;  // another part of the mirror, or no surface here
+  vec3 incoming = normalize(surface.xyz - eyePosition);
+  vec3 reflected = reflect(incoming, normalize(texelFetch(gbufferNormal, texel, 0).xyz));
+
+  vec3 a = inFragment.corner[0], edge1 = inFragment.corner[1] - a, edge2 = inFragment.corner[2] - a;
+  vec3 plane = cross(edge1, edge2);
+  float incidence = dot(reflected, plane);
+  if (incidence == 0.0) discard;
+  float distance = dot(a - surface.xyz, plane) / incidence;
+  if (!(distance > 0.0)) discard;
+  vec3 hit = surface.xyz + distance * reflected;
+  // Barycentric weights of the hit, and how far outside the triangle it lies in world units.
+  float area2 = dot(plane, plane);
+  vec3 weights;
+  weights.y = dot(cross(hit - a, edge2), plane) / area2;
+  weights.z = dot(cross(edge1, hit - a), plane) / area2;
+  weights.x = 1.0 - weights.y - weights.z;
+  float twiceArea = sqrt(area2);
+  vec3 heights = twiceArea / vec3(length(inFragment.corner[2] - inFragment.corner[1]), length(edge2), length(edge1));
+  float outside = max(0.0, max(max(-weights.x * heights.x, -weights.y * heights.y), -weights.z * heights.z));
+  float pixel = max(length(pointDx), length(pointDy));
+  if (outside > kEdgeTolerance * twiceArea / max(max(heights.x, heights.y), heights.z)) discard;
+
+  gl_FragDepth = virtualDepth(worldToClip, eyePosition + (length(surface.xyz - eyePosition) + distance) * incoming, outside > 0.0);
   if (depthOnly != 0) {
     outColor = vec4(0.0);
     return;
   }
-  outColor = vec4(reflectivity * shadeSurface(point, inFragment.worldNormal, uv, inFragment.reflectionPoint), 1.0);
+  // Carry normal and uv from the rasterized point to the hit, through the screen step between them.
+  vec3 step = hit - point;
+  mat2 gram = mat2(dot(pointDx, pointDx), dot(pointDx, pointDy), dot(pointDx, pointDy), dot(pointDy, pointDy));
+  vec2 screenStep = abs(determinant(gram)) > 1e-30 ? inverse(gram) * vec2(dot(step, pointDx), dot(step, pointDy)) : vec2(0.0);
+  vec3 normal = inFragment.worldNormal + screenStep.x * normalDx + screenStep.y * normalDy;
+  vec2 uv = inFragment.surfaceUv + screenStep.x * uvDx + screenStep.y * uvDy;
+  outColor = vec4(reflectivity * shadeSurface(hit, normal, uv, surface.xyz), 1.0);
 }

@@ -14,18 +14,24 @@ in VertexData {
   vec3 worldPosition;
   vec3 worldNormal;
   vec2 surfaceUv;
-  vec3 reflectionPoint;
   vec3 reflectionNormal;
   flat int flags;
 } inVertex[];
 
 uniform int everyCornerReflected;  // 1 on concave and saddle parts
+uniform vec2 frameSize;            // pixels
+
+// The triangle is widened by this much on screen: its virtual image is right to the tessellation
+// threshold, and the fragment shader keeps only pixels whose reflected ray really meets it, so every
+// pixel the triangle shows in must be proposed (conservative rasterization).
+const float kDilationPixels = 2.0;
+const float kMaxCornerShift = 8.0;  // × kDilationPixels: sharp corners move no further
 
 out FragmentData {
   vec3 worldPosition;
   vec3 worldNormal;
   vec2 surfaceUv;
-  vec3 reflectionPoint;
+  flat vec3 corner[3];  // the triangle in world space: each fragment's reflected ray is tested against it
 } outFragment;
 
 void main() {
@@ -35,12 +41,36 @@ void main() {
   if (everyCornerReflected != 0 && (allFlags & kReflectionHidden) != 0) return;
   for (int i = 0; i < 3; ++i)
     if (dot(inVertex[i].reflectionNormal, inVertex[(i + 1) % 3].reflectionNormal) < 0.0) return;
+  // Each corner moves away from the other two so that every edge moves out by kDilationPixels;
+  // corners behind the eye (w <= 0) leave the triangle as it is.
+  vec4 position[3] = vec4[3](gl_in[0].gl_Position, gl_in[1].gl_Position, gl_in[2].gl_Position);
+  if (position[0].w > 0.0 && position[1].w > 0.0 && position[2].w > 0.0) {
+    vec2 screen[3];
+    for (int i = 0; i < 3; ++i) screen[i] = position[i].xy / position[i].w * 0.5 * frameSize;
+    float winding = sign((screen[1].x - screen[0].x) * (screen[2].y - screen[0].y) - (screen[1].y - screen[0].y) * (screen[2].x - screen[0].x));
+    if (winding != 0.0) {
+      vec2 outward[3];  // unit normal of edge i (corner i → i + 1), pointing away from the triangle
+      for (int i = 0; i < 3; ++i) {
+        vec2 edge = normalize(screen[(i + 1) % 3] - screen[i]);
+        outward[i] = winding * vec2(edge.y, -edge.x);
+      }
+      for (int i = 0; i < 3; ++i) {
+        // Corner i lies on edges i and i - 1: move it along both normals' bisector.
+        vec2 a = outward[i], b = outward[(i + 2) % 3];
+        vec2 bisector = a + b;
+        float along = dot(bisector, a);
+        vec2 shift = along > 1e-3 ? bisector / along : a + b;
+        if (length(shift) > kMaxCornerShift) shift *= kMaxCornerShift / length(shift);
+        position[i].xy += kDilationPixels * shift / (0.5 * frameSize) * position[i].w;
+      }
+    }
+  }
   for (int i = 0; i < 3; ++i) {
     outFragment.worldPosition = inVertex[i].worldPosition;
     outFragment.worldNormal = inVertex[i].worldNormal;
     outFragment.surfaceUv = inVertex[i].surfaceUv;
-    outFragment.reflectionPoint = inVertex[i].reflectionPoint;
-    gl_Position = gl_in[i].gl_Position;
+    for (int k = 0; k < 3; ++k) outFragment.corner[k] = inVertex[k].worldPosition;
+    gl_Position = position[i];
     EmitVertex();
   }
   EndPrimitive();

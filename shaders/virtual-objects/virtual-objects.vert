@@ -16,5 +16,5 @@ uniform uint firstSlot;
 void main() {
   ReflectedVertex r = reflected[firstSlot + uint(gl_VertexID)];
   emitVirtualVertex((objectToWorld * vec4(inPosition, 1.0)).xyz, normalToWorld * inNormal, inUv, r.virtualPosition.xyz,
-                    r.reflectionPoint.xyz, r.reflectionNormal.xyz, r.state.w);
+                    r.reflectionNormal.xyz, r.state.w);
 }

@@ -47,6 +47,47 @@ bool hasAnalyticSphereMirror(const scene::Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), isAnalyticSphere);
 }
 
+namespace {
+
+// Judges one search result against the exact sphere solver and adds it to `errors`.
+void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const math::Sphere& sphere, const glm::dvec3& eye,
+           const glm::dvec3& vertex, const glm::vec3& reflectionPoint, int flags, std::size_t slot, double marginPixels) {
+  // A point on or inside the mirror (a tessellated edge through it) has no reflection to judge.
+  if (glm::length(vertex - sphere.center) <= sphere.radius) return;
+  const auto exact = math::sphereReflectionPoint(sphere, eye, vertex);
+  const bool searchVisible = (flags & (passes::ReflectedVertex::kHidden | passes::ReflectedVertex::kUnsolved)) == 0;
+  if (!exact) {
+    errors.exactHiddenButSearchVisible += searchVisible;
+    return;
+  }
+  if ((frame.view.worldToClip() * glm::vec4(glm::vec3(*exact), 1.0f)).w <= 0.0f) return;  // behind the eye
+  const glm::dvec2 exactPixel = toPixels(frame.view, glm::vec3(*exact), frame.width, frame.height);
+  if (exactPixel.x < -marginPixels || exactPixel.y < -marginPixels || exactPixel.x > frame.width + marginPixels ||
+      exactPixel.y > frame.height + marginPixels)
+    return;
+  if (!searchVisible) {
+    errors.searchHiddenButExactVisible++;
+    const double grazing = glm::dot(glm::normalize(eye - *exact), glm::normalize(*exact - sphere.center));
+    errors.searchHiddenNearSilhouette += grazing < ReflectionPointErrors::kNearSilhouetteCosine;
+    return;
+  }
+  const glm::dvec2 offset = toPixels(frame.view, reflectionPoint, frame.width, frame.height) - exactPixel;
+  errors.pixels.push_back(glm::length(offset));
+  errors.vertices.push_back({slot, exactPixel, offset});
+}
+
+// The world sphere of a mirror drawn this frame with an analytic sphere; nullopt otherwise.
+std::optional<math::Sphere> measuredSphere(const scene::Scene& scene, const scene::ScenePose& pose,
+                                           const render::RenderedFrame& frame, std::size_t mirror) {
+  // Mirrors not drawn this frame still hold an older frame's results.
+  if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror) == frame.drawnMirrors.end()) return std::nullopt;
+  const scene::SceneObject& mirrorObject = scene.objects[mirror];
+  if (!isAnalyticSphere(mirrorObject)) return std::nullopt;
+  return worldSphere(*mirrorObject.mirror->analytic, pose.objectToWorld[mirror]);
+}
+
+}  // namespace
+
 ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
                                               const render::RenderedFrame& frame, double marginPixels) {
   ReflectionPointErrors errors;
@@ -54,38 +95,32 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
   const scene::Scene& scene = renderer.scene();
   const glm::dvec3 eye(pose.camera.eye);
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
-    // Mirrors not drawn this frame still hold an older frame's results.
-    if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror.mirrorObject) == frame.drawnMirrors.end()) continue;
-    const scene::SceneObject& mirrorObject = scene.objects[mirror.mirrorObject];
-    if (!isAnalyticSphere(mirrorObject)) continue;
-    const auto sphere = worldSphere(*mirrorObject.mirror->analytic, pose.objectToWorld[mirror.mirrorObject]);
+    const auto sphere = measuredSphere(scene, pose, frame, mirror.mirrorObject);
     if (!sphere) continue;
     for (const passes::ReflectionSlotRange& range : mirror.reflected) {
       const scene::Mesh& mesh = scene.meshes[scene.objects[range.object].mesh];
       for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
         const std::size_t slot = range.firstSlot + v;
-        const passes::ReflectedVertex& result = results[slot];
         const glm::dvec3 vertex(pose.objectToWorld[range.object] * glm::vec4(mesh.vertices[v].position, 1.0f));
-        const auto exact = math::sphereReflectionPoint(*sphere, eye, vertex);
-        const bool searchVisible = (result.state.w & (passes::ReflectedVertex::kHidden | passes::ReflectedVertex::kUnsolved)) == 0;
-        if (!exact) {
-          errors.exactHiddenButSearchVisible += searchVisible;
-          continue;
-        }
-        if ((frame.view.worldToClip() * glm::vec4(glm::vec3(*exact), 1.0f)).w <= 0.0f) continue;  // behind the eye
-        const glm::dvec2 exactPixel = toPixels(frame.view, glm::vec3(*exact), frame.width, frame.height);
-        if (exactPixel.x < -marginPixels || exactPixel.y < -marginPixels || exactPixel.x > frame.width + marginPixels ||
-            exactPixel.y > frame.height + marginPixels)
-          continue;
-        if (!searchVisible) {
-          errors.searchHiddenButExactVisible++;
-          continue;
-        }
-        const glm::dvec2 offset = toPixels(frame.view, glm::vec3(result.reflectionPoint), frame.width, frame.height) - exactPixel;
-        errors.pixels.push_back(glm::length(offset));
-        errors.vertices.push_back({slot, exactPixel, offset});
+        judge(errors, frame, *sphere, eye, vertex, glm::vec3(results[slot].reflectionPoint), results[slot].state.w, slot,
+              marginPixels);
       }
     }
+  }
+  return errors;
+}
+
+ReflectionPointErrors measureTessellatedPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
+                                               const render::RenderedFrame& frame, double marginPixels) {
+  ReflectionPointErrors errors;
+  const glm::dvec3 eye(pose.camera.eye);
+  const std::vector<passes::FinishedVertex> finished = renderer.readTessellatedVertices();
+  for (std::size_t i = 0; i < finished.size(); ++i) {
+    const auto sphere = measuredSphere(renderer.scene(), pose, frame, finished[i].mirrorObject);
+    if (!sphere) continue;
+    const passes::TessellatedVertex& record = finished[i].record;
+    judge(errors, frame, *sphere, eye, glm::dvec3(record.positionU), glm::vec3(record.reflectionTexelX),
+          static_cast<int>(record.virtualFlags.w), i, marginPixels);
   }
   return errors;
 }

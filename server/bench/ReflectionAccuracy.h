@@ -26,6 +26,10 @@ struct ReflectionPointErrors {
   std::vector<MeasuredVertex> vertices;
   int exactHiddenButSearchVisible = 0;  // reflected although no reflection point exists
   int searchHiddenButExactVisible = 0;  // dropped although its reflection is visible
+  // Of the latter, those whose exact reflection point is within kNearSilhouetteCosine of grazing:
+  // where a mesh's polygonal outline and the sphere's disagree.
+  int searchHiddenNearSilhouette = 0;
+  static constexpr double kNearSilhouetteCosine = 0.1;  // the eye sees the point within ~6° of grazing
 
   // The p-quantile (0 ≤ p ≤ 1) of `pixels`; 0 when there are none.
   double percentile(double p) const;
@@ -37,6 +41,11 @@ struct ReflectionPointErrors {
 // the frame (plus `marginPixels`). Mirrors without an analytic sphere are skipped.
 ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
                                               const render::RenderedFrame& frame, double marginPixels = 0.0);
+
+// The same for every vertex the last frame's tessellation finished (its corners and the midpoints it
+// added), when it was tessellated; MeasuredVertex::slot is then the vertex's index in the lists.
+ReflectionPointErrors measureTessellatedPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
+                                               const render::RenderedFrame& frame, double marginPixels = 0.0);
 
 // True when the scene has a mirror measureReflectionPoints can measure.
 bool hasAnalyticSphereMirror(const scene::Scene& scene);

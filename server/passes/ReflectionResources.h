@@ -65,6 +65,7 @@ class ReflectionResources {
   // Set for every mirror with MirrorSlots::seesItself.
   const MirrorBvh& mirrorBvh(std::size_t mirrorObject) const { return mirrorBvhs_.at(mirrorObject); }
   TessellationBuffers& tessellation() { return tessellation_; }
+  const TessellationBuffers& tessellation() const { return tessellation_; }
 
   // The texels a mirror covers now (after the G-buffer pass), and those that changed this frame:
   // last frame's and this frame's cover together, which the pyramid must rebuild.

@@ -78,6 +78,23 @@ std::vector<TessellationBuffers::RoundCounts> TessellationBuffers::readCounters(
   return counts;
 }
 
+std::vector<FinishedVertex> TessellationBuffers::readFinished() const {
+  std::vector<TessellatedVertex> records(3 * finishedCount_);
+  if (!records.empty()) {
+    gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, finished());
+    gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(records.size() * kRecordBytes), records.data());
+    gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+  std::vector<FinishedVertex> vertices;
+  for (const TessellatedRange& range : ranges_) {
+    if (range.fromMesh) continue;
+    for (GLsizei k = 0; k < 3 * range.triangles; ++k)
+      vertices.push_back({range.mirrorObject, records[static_cast<std::size_t>(3 * range.firstTriangle + k)]});
+  }
+  return vertices;
+}
+
 const TessellationStatistics& TessellationBuffers::finishStatistics() {
   gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());

@@ -24,6 +24,23 @@ struct TessellatedRange {
   bool fromMesh = false;  // nothing split: draw the object's own mesh with its search slots
 };
 
+// CPU view of one record of the lists: the std430 twin of TessellatedVertex in
+// shaders/common/tessellated-vertex.glsl.
+struct TessellatedVertex {
+  glm::vec4 positionU;         // world position, u
+  glm::vec4 normalV;           // world normal, v
+  glm::vec4 virtualFlags;      // virtual position, flags (ReflectedVertex::k...)
+  glm::vec4 reflectionTexelX;  // reflection point R, its texel's x
+  glm::vec4 normalTexelY;      // normal at R, its texel's y
+};
+static_assert(sizeof(TessellatedVertex) == 80, "must match tessellated-vertex.glsl");
+
+// A finished vertex and the mirror it was reflected in (what tests measure against exact answers).
+struct FinishedVertex {
+  std::size_t mirrorObject = 0;
+  TessellatedVertex record;
+};
+
 struct TessellationStatistics {
   std::uint32_t inputTriangles = 0;                 // reflected objects' triangles, summed over mirrors
   std::vector<std::uint32_t> trianglesPerRound;     // working triangles entering each round
@@ -34,7 +51,7 @@ struct TessellationStatistics {
 
 class TessellationBuffers {
  public:
-  static constexpr std::size_t kRecordBytes = 80;               // one TessellatedVertex
+  static constexpr std::size_t kRecordBytes = sizeof(TessellatedVertex);
   static constexpr std::size_t kTriangleBytes = 3 * kRecordBytes;
   static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 16;  // one EdgeSplit
   static constexpr std::size_t kMaxTriangles = std::size_t{1} << 20;  // per list: 240 MiB
@@ -65,6 +82,10 @@ class TessellationBuffers {
   };
   void resetCounters(std::size_t objects);
   std::vector<RoundCounts> readCounters(std::size_t objects) const;
+
+  // Every vertex of the finished lists, with its mirror (a GPU readback; ranges drawn from meshes
+  // have no records: their vertices are the search slots').
+  std::vector<FinishedVertex> readFinished() const;
 
   std::vector<TessellatedRange>& ranges() { return ranges_; }
   const std::vector<TessellatedRange>& ranges() const { return ranges_; }

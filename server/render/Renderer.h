@@ -49,6 +49,8 @@ class Renderer {
   void resetCoherence() { reflections_.resetCoherence(); }
   // The last frame's search results, one per slot of reflectionSlots() (a GPU readback).
   std::vector<passes::ReflectedVertex> readReflectedVertices() const { return reflections_.readReflectedVertices(); }
+  // The last frame's tessellated vertices (midpoints included), when it was tessellated.
+  std::vector<passes::FinishedVertex> readTessellatedVertices() const { return reflections_.tessellation().readFinished(); }
   const passes::ReflectionSlots& reflectionSlots() const { return slots_; }
   const scene::Scene& scene() const { return *scene_; }
 

@@ -19,8 +19,10 @@ const float kContactHeight = 1e-3;  // unit-sphere radii: closer vertices reflec
 const float kStalledResidual = 0.1;  // normal and bisector still this far apart (sine): the refinement is lost
 // On a mesh the best point of a part whose reflection lies beyond its outline (hidden behind a
 // convex part's silhouette, or on another part) stops on the outline with normal and bisector this
-// far apart (sine): such a vertex has no reflection point in the part.
+// far apart (sine), or as far as the normal turns from one texel to the next on a mirror a few texels
+// wide: such a vertex has no reflection point in the part.
 const float kNoReflectionResidual = 0.05;
+
 const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
                                       ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
 
@@ -173,20 +175,30 @@ bool residualSlope(vec2 x, vec3 r0, vec2 axis, out vec3 slope) {
   return hasPlus || hasMinus;
 }
 
-// Three Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's winner.
-vec2 refine(ivec2 texel) {
+// Up to five Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's
+// winner. `blocked`: a step would have left the mirror (part): the best point lies on its outline,
+// where a vertex without a reflection point in the part ends up.
+vec2 refine(ivec2 texel, out bool blocked) {
   vec2 x = vec2(texel);
-  for (int iteration = 0; iteration < 3; ++iteration) {
+  blocked = false;
+  for (int iteration = 0; iteration < 5; ++iteration) {
     vec3 r0, jx, jy;
-    if (!residualAt(x, r0) || !residualSlope(x, r0, vec2(1.0, 0.0), jx) || !residualSlope(x, r0, vec2(0.0, 1.0), jy)) break;
+    if (!residualAt(x, r0) || !residualSlope(x, r0, vec2(1.0, 0.0), jx) || !residualSlope(x, r0, vec2(0.0, 1.0), jy)) {
+      blocked = true;
+      break;
+    }
     mat2 normalMatrix = mat2(dot(jx, jx), dot(jx, jy), dot(jx, jy), dot(jy, jy));
     if (abs(determinant(normalMatrix)) < 1e-30) break;
     vec2 step = -inverse(normalMatrix) * vec2(dot(jx, r0), dot(jy, r0));
     if (length(step) > 1.0) step = normalize(step);
     vec2 next = clamp(x + step, vec2(texel) - 2.5, vec2(texel) + 2.5);
     vec3 unused;
-    if (!residualAt(next, unused)) break;
+    if (!residualAt(next, unused)) {
+      blocked = true;
+      break;
+    }
     x = next;
+    if (length(step) < 1e-3) break;  // converged within a thousandth of a texel
   }
   return x;
 }
@@ -247,6 +259,17 @@ bool refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
   return length(tangentialBisectorOnQuadric(u)) < kStalledResidual;
 }
 
+// How far the G-buffer normal turns between the texel and its neighbours (on the mirror).
+float normalTurnPerTexel(ivec2 texel) {
+  vec3 n0 = texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz;
+  float turn = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 at = texel + kNeighbours[k];
+    if (objectiveAt(at, 0) > kInvalid) turn = max(turn, length(texelFetch(gbufferNormal, ivec3(at, layer), 0).xyz - n0));
+  }
+  return turn;
+}
+
 // Finds the reflection of `vertex` (world space) in the mirror on G-buffer layer `layer`;
 // state.xy is the texel reached (the next search's seed), state.z the steps, state.w the flags.
 // `retryWhenLost`: if the refinement from a seeded climb is lost, search again from the pyramid
@@ -286,7 +309,8 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
 
   ReflectedVertex result;
   bool refinedExactly = value > kInvalid && analytic != 0;  // r and n came from refineOnQuadric
-  if (!refinedExactly && (value <= kInvalid || !surfaceAt(refine(texel), r, n))) {
+  bool blocked = false;
+  if (!refinedExactly && (value <= kInvalid || !surfaceAt(refine(texel, blocked), r, n))) {
     vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
     r = p.xyz;
     n = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
@@ -296,16 +320,18 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
     result.virtualPosition = vec4(0.0);
   } else {
     // Behind the mirror: region C (Estalella et al. 2006, §5.1), exactly for an analytic mirror.
-    // On a mesh, the climb's best point must be a reflection point (normal along the bisector) with
-    // the vertex in front of its tangent plane; the tangent plane alone (the paper's test) holds
-    // only on convex mirrors: a concave part's best point on its rim can have the vertex in front.
+    // On a mesh, a vertex is hidden behind the tangent plane at the best point, or when that point
+    // is held on the mirror's (part's) outline with normal and bisector still apart: the tangent
+    // plane alone (the paper's test) holds only on convex mirrors, and a concave part's best point
+    // on its rim can have the vertex in front.
     // A hidden vertex is mirrored across the silhouette's tangent plane (not the paper's eq. 1,
     // which lands inside the silhouette and smears), which projects it just outside; for an
     // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
     // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
     // which mirroring would magnify by about 2|V − R| at grazing reflection points.
     bool hidden = analytic != 0 ? hiddenExactly
-                                : dot(vertexWorld - r, n) < 0.0 || length(tangentialBisector(r, n)) > kNoReflectionResidual;
+                                : dot(vertexWorld - r, n) < 0.0 ||
+                                      (blocked && length(tangentialBisector(r, n)) > max(kNoReflectionResidual, normalTurnPerTexel(texel)));
     if (hidden) {
       flags |= kReflectionHidden;
       vec3 silhouette, silhouetteNormal;

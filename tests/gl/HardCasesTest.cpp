@@ -20,16 +20,21 @@ namespace {
 
 using namespace scene::builtin;
 
+// What the mirror's surface is: the exact sphere, or (the general case) its 96×48 mesh, the sphere
+// then only the exact answer reflection points are measured against.
+enum class Surface { Exact, Mesh };
+
 // A unit sphere mirror centred at `centre` and one reflected object whose vertices are given relative
 // to that centre (placed there, as a modeller places a local mesh far from the origin).
 std::shared_ptr<const scene::Scene> sphereAndObject(const glm::vec3& centre, const std::vector<glm::vec3>& positions,
-                                                    std::vector<std::uint32_t> indices) {
+                                                    std::vector<std::uint32_t> indices, Surface surface = Surface::Exact) {
   scene::Scene scene;
   scene.name = "hard-case";
   scene.lights.push_back(sunLight({1.0f, 2.0f, 1.0f}, 1.0f));
   const std::uint32_t sphere = addSphereMirror(scene, "mirror", addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 96, 48)),
                                                addMaterial(scene, perfectMirror("mirror")), 1.0f, placed(centre));
   scene.objects[sphere].reflected = false;
+  scene.objects[sphere].mirror->analytic->exactSurface = surface == Surface::Exact;
   scene::Mesh mesh;
   mesh.name = "object";
   for (const glm::vec3& p : positions) mesh.vertices.push_back({p, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec2(0.0f)});
@@ -61,6 +66,7 @@ struct Outcome {
   std::size_t slots = 0, nonFinite = 0;
   passes::GBufferPrecision precision = passes::GBufferPrecision::Float32;  // what the frame's G-buffer used
   bench::ReflectionPointErrors errors;
+  bench::ReflectionPointErrors tessellated;  // every vertex tessellation finished, midpoints included
 };
 
 // Renders the pose and checks every reflection result of the object: finite, and where the exact
@@ -78,6 +84,12 @@ Outcome renderAndMeasure(render::Renderer& renderer, const math::Camera& camera,
   out.nonFinite = nonFiniteResults(renderer);
   for (std::size_t i = 0; i < frame->rgba.size(); i += 4) EXPECT_EQ(frame->rgba[i + 3], 255u) << "an undefined pixel";
   out.errors = bench::measureReflectionPoints(renderer, pose, *frame);
+  if (!frame->tessellation.trianglesPerRound.empty()) {
+    out.tessellated = bench::measureTessellatedPoints(renderer, pose, *frame);
+    for (const passes::FinishedVertex& vertex : renderer.readTessellatedVertices())
+      for (int axis = 0; axis < 3; ++axis)
+        if (!std::isfinite(vertex.record.virtualFlags[axis]) || !std::isfinite(vertex.record.reflectionTexelX[axis])) ++out.nonFinite;
+  }
   return out;
 }
 
@@ -96,7 +108,9 @@ struct HardCase {
   glm::vec3 centre;                 // where the mirror (and the object) sit
   std::vector<glm::vec3> vertices;  // relative to the centre
   math::Camera camera;              // relative to the centre (moved with it)
-  double maxErrorPixels;            // bound on every measured reflection point
+  double maxErrorPixels;            // bound on every measured reflection point (exact sphere)
+  double meshMaxErrorPixels;        // the same on the 96×48 mesh: mesh and search error together
+                                    // (< 0: on the mesh, finite only)
   bool expectMeasured = true;       // some vertex has a visible reflection to compare
   bool judged = true;               // false: no reflection is defined (vertices on or in the mirror); finite only
 };
@@ -130,42 +144,47 @@ std::vector<HardCase> hardCases() {
   return {
       // Eye, centre and vertex (nearly) on one line: behind the sphere (hidden) and in front of it.
       {"collinear_behind", origin, concat({{{0, 0, -3}, {1e-6f, 0, -3}, {0, 1e-4f, -2}, {0, 0, -1.0001f}}, ring({0, 0, 1}, -3.0f, 1e-3f, 12)}),
-       standard, 0.05, false},
+       standard, 0.05, 0.5, false},
       {"collinear_in_front", origin, concat({{{0, 0, 2}, {1e-6f, 0, 3}, {0, 1e-4f, 1.5f}, {0, 0, 4.9f}}, ring({0, 0, 1}, 2.5f, 1e-3f, 12)}),
-       standard, 0.05},
+       standard, 0.05, 0.5},
       // Vertices and eye both near the horizon: reflection points at grazing angles on the silhouette.
       {"grazing", origin, concat({ring({0, 0, 1}, -0.05f, 1.05f, 48), ring({0, 0, 1}, 0.02f, 1.2f, 48)}),
-       lookAt({0.0f, 0.0f, 3.0f}, origin, 50.0f), 0.1},
+       lookAt({0.0f, 0.0f, 3.0f}, origin, 50.0f), 0.1, 2.0},
       // An object touching the mirror (gap 1e-4 radius); vertices exactly on or just inside the surface
       // have no defined reflection: they must only stay finite.
       {"touching_with_a_gap_of_1e4th", origin,
        concat({ring({0, 1, 0}, 0.0f, 1.0001f, 36), ring({1, 0, 0}, 0.5f, std::sqrt(1.0001f * 1.0001f - 0.25f), 36)}),
-       standard, 0.05},
+       standard, 0.05, 2.0},
       {"on_and_inside_the_surface", origin,
        concat({ring({0, 1, 0}, 0.0f, 1.0f, 36), ring({0, 1, 0}, 0.3f, 0.9999f * std::sqrt(1.0f - 0.09f), 36)}),
-       standard, 0.0, false, false},
-      {"camera_very_close", origin, shell, lookAt({0.0f, 0.0f, 1.002f}, {0.0f, 0.0f, -1.0f}, 100.0f), 0.1},
-      {"camera_very_far", origin, shell, lookAt({0.0f, 0.0f, 1e4f}, origin, 0.02f), 0.05},
-      {"translated_1e3", {1000.0f, -300.0f, 1000.0f}, shell, standard, 0.1},
-      {"translated_1e4", {10000.0f, 0.0f, -10000.0f}, shell, standard, 0.5},
-      {"mirror_half_off_screen", origin, shell, lookAt(eyeZ, {1.8f, 0.0f, 0.0f}, 40.0f), 0.05},
-      {"mirror_a_few_pixels", origin, shell, lookAt({0.0f, 0.0f, 400.0f}, origin, 40.0f), 0.05},
-      {"mirror_fills_the_screen", origin, shell, lookAt({0.0f, 0.0f, 1.5f}, origin, 40.0f), 0.05},
+       standard, 0.0, 0.0, false, false},
+      {"camera_very_close", origin, shell, lookAt({0.0f, 0.0f, 1.002f}, {0.0f, 0.0f, -1.0f}, 100.0f), 0.1,
+       -1.0},  // the eye is nearer the sphere than 3× its mesh's facets are off it: the mesh, not the search, decides
+      {"camera_very_far", origin, shell, lookAt({0.0f, 0.0f, 1e4f}, origin, 0.02f), 0.05, 1.5},
+      {"translated_1e3", {1000.0f, -300.0f, 1000.0f}, shell, standard, 0.1, 1.0},
+      {"translated_1e4", {10000.0f, 0.0f, -10000.0f}, shell, standard, 0.5, 1.5},
+      {"mirror_half_off_screen", origin, shell, lookAt(eyeZ, {1.8f, 0.0f, 0.0f}, 40.0f), 0.05, 1.0},
+      {"mirror_a_few_pixels", origin, shell, lookAt({0.0f, 0.0f, 400.0f}, origin, 40.0f), 0.05,
+       -1.0},  // the mesh spans 4 texels: too coarse a G-buffer to tell hidden from visible on it (the image is checked per pixel)
+      {"mirror_fills_the_screen", origin, shell, lookAt({0.0f, 0.0f, 1.5f}, origin, 40.0f), 0.05, 1.0},
       // Triangles whose corners fall on different sides: reflected in front, hidden behind the
       // sphere, and at the horizon between; tessellation splits the edges that cross over.
       {"triangles_across_the_horizon", origin,
        {{1.6f, 0.2f, 0.8f}, {0.0f, 0.3f, -1.8f}, {-1.6f, -0.2f, 0.8f}, {1.2f, 0.0f, 0.0f}, {0.0f, 1.5f, -0.1f}, {-0.5f, 0.0f, -2.5f}},
-       standard, 0.05},
+       standard, 0.05, 1.0},
   };
 }
 
-class HardCases : public ::testing::TestWithParam<HardCase> {};
+class HardCases : public ::testing::TestWithParam<std::tuple<HardCase, Surface>> {};
 
+// With and without tessellation, each from cold seeds: the second run must not inherit the first's.
+// Tessellation's own vertices (edge midpoints) are measured too, not only the mesh's.
 TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
-  const HardCase& hard = GetParam();
+  const auto& [hard, surface] = GetParam();
+  const double bound = surface == Surface::Exact ? hard.maxErrorPixels : hard.meshMaxErrorPixels;
   auto gl = context();
   ASSERT_TRUE(gl);
-  auto scene = sphereAndObject(hard.centre, hard.vertices, triples(hard.vertices.size()));
+  auto scene = sphereAndObject(hard.centre, hard.vertices, triples(hard.vertices.size()), surface);
   ASSERT_EQ(scene::sceneProblem(*scene), std::nullopt);
   auto renderer = render::Renderer::create(*gl, scene);
   ASSERT_TRUE(renderer) << renderer.error();
@@ -175,23 +194,38 @@ TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
   for (auto mode : {passes::TessellationMode::None, passes::TessellationMode::CrackFree}) {
     passes::ReflectionSettings settings;
     settings.tessellation.mode = mode;
+    (*renderer)->resetCoherence();
     const Outcome outcome = renderAndMeasure(**renderer, camera, 320, 240, settings);
     EXPECT_GT(outcome.slots, 0u);
     EXPECT_EQ(outcome.nonFinite, 0u) << "NaN or Inf in a reflection result";
-    if (!hard.judged) continue;
+    if (!hard.judged || bound < 0.0) continue;
     if (hard.expectMeasured) {
       EXPECT_FALSE(outcome.errors.pixels.empty()) << "no visible reflection to compare";
     }
-    if (!outcome.errors.pixels.empty()) {
-      EXPECT_LE(outcome.errors.percentile(1.0), hard.maxErrorPixels)
-          << "p50 " << outcome.errors.percentile(0.5) << " over " << outcome.errors.pixels.size() << " vertices";
+    std::printf("%s%s, %s: p99 %.3g px, max %.3g px over %zu vertices; tessellated: max %.3g px over %zu\n", hard.name,
+                surface == Surface::Mesh ? " on the mesh" : "", mode == passes::TessellationMode::None ? "untessellated" : "tessellated",
+                outcome.errors.percentile(0.99), outcome.errors.percentile(1.0), outcome.errors.pixels.size(),
+                outcome.tessellated.percentile(1.0), outcome.tessellated.pixels.size());
+    for (const auto* errors : {&outcome.errors, &outcome.tessellated}) {
+      if (errors->pixels.empty()) continue;
+      const char* which = errors == &outcome.errors ? "mesh vertices" : "tessellated vertices";
+      EXPECT_LE(errors->percentile(1.0), bound)
+          << which << ": p50 " << errors->percentile(0.5) << ", p99 " << errors->percentile(0.99) << " over " << errors->pixels.size();
+      // On a mesh the silhouette is its polygon's, not the sphere's: vertices reflected within a few
+      // degrees of grazing may be hidden there; every other judgement must agree.
+      int misjudged = errors->exactHiddenButSearchVisible + errors->searchHiddenButExactVisible;
+      if (surface == Surface::Mesh) misjudged -= errors->searchHiddenNearSilhouette;
+      EXPECT_LE(misjudged, 1)
+          << which << ": " << errors->exactHiddenButSearchVisible << " reflected without a reflection point, "
+          << errors->searchHiddenButExactVisible << " hidden although reflected, of " << errors->pixels.size() << " measured";
     }
-    EXPECT_LE(outcome.errors.exactHiddenButSearchVisible + outcome.errors.searchHiddenButExactVisible, 1);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Sphere, HardCases, ::testing::ValuesIn(hardCases()),
-                         [](const auto& test) { return std::string(test.param.name); });
+INSTANTIATE_TEST_SUITE_P(Sphere, HardCases, ::testing::Combine(::testing::ValuesIn(hardCases()), ::testing::Values(Surface::Exact, Surface::Mesh)),
+                         [](const auto& test) {
+                           return std::string(std::get<0>(test.param).name) + (std::get<1>(test.param) == Surface::Exact ? "" : "_on_the_mesh");
+                         });
 
 TEST(HardCasesGeometry, DegenerateSliverAndDuplicatedTrianglesStayFinite) {
   auto gl = context();
@@ -220,15 +254,18 @@ TEST(HardCasesGeometry, ACameraTeleportStartsFromStaleSeedsAndStillConverges) {
   auto gl = context();
   ASSERT_TRUE(gl);
   std::vector<glm::vec3> vertices = concat({ring({0, 1, 0}, 0.0f, 2.0f, 48), ring({1, 0, 0}, 0.5f, 2.5f, 48)});
-  auto scene = sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()));
-  auto renderer = render::Renderer::create(*gl, scene);
-  ASSERT_TRUE(renderer) << renderer.error();
-  // Warm seeds from one side, then the opposite side and a far jump: seeds point at the wrong texels.
-  for (const glm::vec3& eye : {glm::vec3(0, 0, 5), glm::vec3(0, 0.5f, -5), glm::vec3(4, 3, 0.2f), glm::vec3(0, 0, 5)}) {
-    const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, glm::vec3(0.0f), 45.0f), 320, 240);
-    EXPECT_EQ(outcome.nonFinite, 0u);
-    ASSERT_FALSE(outcome.errors.pixels.empty());
-    EXPECT_LE(outcome.errors.percentile(1.0), 0.05) << "eye " << eye.x << "," << eye.y << "," << eye.z;
+  for (const Surface surface : {Surface::Exact, Surface::Mesh}) {
+    auto renderer = render::Renderer::create(*gl, sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()), surface));
+    ASSERT_TRUE(renderer) << renderer.error();
+    // Warm seeds from one side, then the opposite side and a far jump: seeds point at the wrong texels.
+    for (const glm::vec3& eye : {glm::vec3(0, 0, 5), glm::vec3(0, 0.5f, -5), glm::vec3(4, 3, 0.2f), glm::vec3(0, 0, 5)}) {
+      const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, glm::vec3(0.0f), 45.0f), 320, 240);
+      EXPECT_EQ(outcome.nonFinite, 0u);
+      ASSERT_FALSE(outcome.errors.pixels.empty());
+      // On the 96×48 mesh its facets add up to ~0.6 px, the same from cold seeds (HardCases on the mesh).
+      EXPECT_LE(outcome.errors.percentile(1.0), surface == Surface::Exact ? 0.05 : 1.0)
+          << (surface == Surface::Exact ? "sphere" : "mesh") << ", eye " << eye.x << "," << eye.y << "," << eye.z;
+    }
   }
 }
 
@@ -329,11 +366,20 @@ TEST(HardCasesGeometry, VertexCountsNearTheGpuBufferLimitsRenderOrFailByName) {
   EXPECT_LE(outcome.errors.percentile(1.0), 0.05);
 }
 
-// 200 random eyes × 500 random vertices = 10^5 (mirror, eye, vertex) configurations.
-TEST(HardCasesRandomized, AHundredThousandConfigurationsAgreeWithTheExactSolver) {
+// Random (mirror, eye, vertex) configurations: eyes 1.05-1000 radii away aiming near the sphere,
+// vertices 1.0001-20 radii from its centre, untessellated (the search itself is under test).
+struct RandomizedResult {
+  std::size_t configurations = 0, nonFinite = 0, measured = 0, misjudged = 0, misjudgedNearSilhouette = 0;
+  std::vector<double> errors;  // sorted, pixels
+  double quantile(double p) const { return errors[static_cast<std::size_t>(p * static_cast<double>(errors.size() - 1))]; }
+};
+
+RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexCount, unsigned seed) {
+  RandomizedResult result;
   auto gl = context();
-  ASSERT_TRUE(gl);
-  std::mt19937 random(20261202);
+  EXPECT_TRUE(gl);
+  if (!gl) return result;
+  std::mt19937 random(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   auto direction = [&] {
     const float z = 2.0f * unit(random) - 1.0f, angle = 6.2831853f * unit(random);
@@ -341,40 +387,58 @@ TEST(HardCasesRandomized, AHundredThousandConfigurationsAgreeWithTheExactSolver)
     return glm::vec3(r * std::cos(angle), z, r * std::sin(angle));
   };
   auto logUniform = [&](float low, float high) { return low * std::pow(high / low, unit(random)); };
-  constexpr int kVertices = 500, kEyes = 200;
   std::vector<glm::vec3> vertices;
-  for (int i = 0; i < kVertices; ++i) vertices.push_back(direction() * logUniform(1.0001f, 20.0f));
-  auto scene = sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()));
-  auto renderer = render::Renderer::create(*gl, scene);
-  ASSERT_TRUE(renderer) << renderer.error();
+  for (int i = 0; i < vertexCount; ++i) vertices.push_back(direction() * logUniform(1.0001f, 20.0f));
+  auto renderer = render::Renderer::create(*gl, sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()), surface));
+  EXPECT_TRUE(renderer) << renderer.error();
+  if (!renderer) return result;
   passes::ReflectionSettings settings;
-  settings.tessellation.mode = passes::TessellationMode::None;  // the search itself is under test
-  std::size_t configurations = 0, nonFinite = 0, measured = 0, misjudged = 0;
-  std::vector<double> errors;
-  for (int e = 0; e < kEyes; ++e) {
+  settings.tessellation.mode = passes::TessellationMode::None;
+  for (int e = 0; e < eyes; ++e) {
     const float distance = logUniform(1.05f, 1000.0f);
     // A field of view that shows the sphere at 20-90 % of the frame height, aimed a little off centre.
     const float fov = 2.0f * glm::degrees(std::asin(1.0f / distance)) / (0.2f + 0.7f * unit(random));
     const glm::vec3 eye = direction() * distance;
     const glm::vec3 target = 0.3f * (direction() * unit(random));
     const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, target, std::min(fov, 120.0f)), 160, 120, settings);
-    configurations += outcome.slots;
-    nonFinite += outcome.nonFinite;
-    measured += outcome.errors.pixels.size();
-    misjudged += static_cast<std::size_t>(outcome.errors.exactHiddenButSearchVisible + outcome.errors.searchHiddenButExactVisible);
-    errors.insert(errors.end(), outcome.errors.pixels.begin(), outcome.errors.pixels.end());
+    result.configurations += outcome.slots;
+    result.nonFinite += outcome.nonFinite;
+    result.measured += outcome.errors.pixels.size();
+    result.misjudged +=
+        static_cast<std::size_t>(outcome.errors.exactHiddenButSearchVisible + outcome.errors.searchHiddenButExactVisible);
+    result.misjudgedNearSilhouette += static_cast<std::size_t>(outcome.errors.searchHiddenNearSilhouette);
+    result.errors.insert(result.errors.end(), outcome.errors.pixels.begin(), outcome.errors.pixels.end());
   }
-  EXPECT_EQ(configurations, static_cast<std::size_t>(kVertices * kEyes));
-  EXPECT_EQ(nonFinite, 0u) << "NaN or Inf in a reflection result";
-  ASSERT_GT(measured, configurations / 20) << "too few visible reflections to judge";
-  std::sort(errors.begin(), errors.end());
-  const double p99 = errors[errors.size() * 99 / 100], worst = errors.back();
-  EXPECT_LE(p99, 0.01) << "p50 " << errors[errors.size() / 2];
-  EXPECT_LE(worst, 0.5) << "the worst are vertices within 0.004 radii of the surface";
-  EXPECT_LE(misjudged, measured / 10000) << "hidden/visible disagreements";
-  RecordProperty("measured", static_cast<int>(measured));
-  std::printf("randomized: %zu configurations, %zu measured, p50 %.2g px, p99 %.2g px, max %.2g px, %zu misjudged\n",
-              configurations, measured, errors[errors.size() / 2], p99, worst, misjudged);
+  std::sort(result.errors.begin(), result.errors.end());
+  std::printf("randomized %s: %zu configurations, %zu measured, error p50 %.2g px, p90 %.2g px, p99 %.2g px, max %.2g px, "
+              "%zu misjudged (%zu within 6 degrees of grazing)\n",
+              surface == Surface::Exact ? "exact sphere" : "96x48 mesh sphere", result.configurations, result.measured,
+              result.quantile(0.5), result.quantile(0.9), result.quantile(0.99), result.errors.back(), result.misjudged,
+              result.misjudgedNearSilhouette);
+  return result;
+}
+
+// 200 random eyes × 500 random vertices = 10^5 configurations on the exact sphere.
+TEST(HardCasesRandomized, AHundredThousandConfigurationsAgreeWithTheExactSolver) {
+  const RandomizedResult result = randomizedConfigurations(Surface::Exact, 200, 500, 20261202);
+  EXPECT_EQ(result.configurations, 100000u);
+  EXPECT_EQ(result.nonFinite, 0u) << "NaN or Inf in a reflection result";
+  ASSERT_GT(result.measured, result.configurations / 20) << "too few visible reflections to judge";
+  EXPECT_LE(result.quantile(0.99), 0.01) << "p50 " << result.quantile(0.5);
+  EXPECT_LE(result.errors.back(), 0.5) << "the worst are vertices within 0.004 radii of the surface";
+  EXPECT_LE(result.misjudged, result.measured / 10000) << "hidden/visible disagreements";
+  RecordProperty("measured", static_cast<int>(result.measured));
+}
+
+// The general case: the same on the sphere's 96×48 mesh (50 eyes × 250 vertices = 12 500), where the
+// error is the mesh's and the search's together and the outline is the mesh's polygon.
+TEST(HardCasesRandomized, TenThousandConfigurationsOnAMeshSphereStayNearTheExactSolver) {
+  const RandomizedResult result = randomizedConfigurations(Surface::Mesh, 50, 250, 20261203);
+  EXPECT_EQ(result.configurations, 12500u);
+  EXPECT_EQ(result.nonFinite, 0u) << "NaN or Inf in a reflection result";
+  ASSERT_GT(result.measured, result.configurations / 20) << "too few visible reflections to judge";
+  EXPECT_LE(result.quantile(0.99), 1.0) << "p50 " << result.quantile(0.5);  // measured 0.54 px: the 96×48 facets
+  EXPECT_LE(result.misjudged - result.misjudgedNearSilhouette, result.measured / 100) << "hidden/visible disagreements";
 }
 
 }  // namespace

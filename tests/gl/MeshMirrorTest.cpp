@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "bench/ReflectionAccuracy.h"
 #include "encode/PngEncoder.h"
 #include "gl/GlContext.h"
 #include "reference/ImageMetrics.h"
@@ -116,6 +117,25 @@ TEST(MeshMirror, TessellatedSphereMatchesTheRayTracerAndTheExactSphere) {
     EXPECT_GT(own.mirrorPixels, 20000u);
     EXPECT_LE(own.mismatch, 0.015) << "t=" << t;      // 47-52 % before the fix
     EXPECT_LE(sphere.mismatch, 0.015) << "t=" << t;   // the bound against the exact sphere
+  }
+}
+
+// The bound for the general case: the 128×64 mesh's reflection points within 0.5 px p99 of
+// the exact sphere solver's, along the scene's orbit.
+TEST(MeshMirror, TessellatedSphereReflectionPointsStayWithinHalfAPixel) {
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  ASSERT_TRUE(context) << context.error();
+  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("mesh-sphere")));
+  ASSERT_TRUE(renderer) << renderer.error();
+  for (double t : {0.0, 4.0, 11.0}) {
+    const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
+    auto frame = (*renderer)->render(pose, kWidth, kHeight);
+    ASSERT_TRUE(frame) << frame.error();
+    const auto errors = bench::measureReflectionPoints(**renderer, pose, *frame);
+    ASSERT_GT(errors.pixels.size(), 100u);
+    std::printf("mesh sphere t=%.0f: reflection points p50 %.3f px, p99 %.3f px, max %.3f px over %zu vertices\n", t,
+                errors.percentile(0.5), errors.percentile(0.99), errors.percentile(1.0), errors.pixels.size());
+    EXPECT_LE(errors.percentile(0.99), 0.5) << "t=" << t;
   }
 }
 

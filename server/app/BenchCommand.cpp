@@ -212,8 +212,10 @@ int runAccuracyBench(std::span<const std::string> arguments) {
   auto context = openGlContext(options.text("gl"));
   if (!context) return fail(context.error());
 
-  const std::vector<bench::AccuracySetting> sweep = bench::accuracySweep();
-  const std::size_t steps = sweep.size() + static_cast<std::size_t>(settings.poses);
+  const std::vector<bench::AccuracySetting> sweep = bench::accuracySweep(**scene);
+  // Each setting, and a ray-traced reference per pose for the scene and for every re-meshed mirror.
+  const auto remeshed = static_cast<std::size_t>(std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.mirrorMesh.has_value(); }));
+  const std::size_t steps = sweep.size() + (1 + remeshed) * static_cast<std::size_t>(settings.poses);
   std::size_t step = 0;
   const auto started = std::chrono::steady_clock::now();
   auto rows = bench::benchmarkAccuracy(**context, *scene, settings, sweep, [&](const std::string& what) {

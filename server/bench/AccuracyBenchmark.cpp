@@ -9,6 +9,7 @@
 #include "bench/TessellationBenchmark.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
+#include "scene/Primitives.h"
 #include "scene/ScenePose.h"
 
 namespace specula::bench {
@@ -59,7 +60,28 @@ double mean(const std::vector<double>& values) {
 
 }  // namespace
 
-std::vector<AccuracySetting> accuracySweep() {
+bool approximatesAnExactShape(const scene::SceneObject& object) {
+  return object.mirror && object.mirror->analytic && !object.mirror->analytic->exactSurface;
+}
+
+scene::Scene withMirrorMeshes(const scene::Scene& scene, glm::ivec2 slicesAndStacks) {
+  scene::Scene result = scene;
+  for (scene::SceneObject& object : result.objects) {
+    if (!approximatesAnExactShape(object)) continue;
+    const scene::AnalyticShape& shape = *object.mirror->analytic;
+    scene::Mesh mesh = scene::primitives::uvSphere(scene.meshes[object.mesh].name, 1.0f, slicesAndStacks.x, slicesAndStacks.y);
+    // The unit sphere onto the shape in object space: positions by centre + radii, normals by 1 / radii.
+    for (scene::Vertex& v : mesh.vertices) {
+      v.position = shape.center + v.position * shape.radii;
+      v.normal = glm::normalize(v.normal / shape.radii);
+    }
+    object.mesh = static_cast<std::uint32_t>(result.meshes.size());
+    result.meshes.push_back(std::move(mesh));
+  }
+  return result;
+}
+
+std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
   std::vector<AccuracySetting> sweep;
   for (int faceSize : {256, 1024}) {
     AccuracySetting setting{"environment map " + std::to_string(faceSize) + " px", "environment map", {}};
@@ -91,8 +113,81 @@ std::vector<AccuracySetting> accuracySweep() {
   AccuracySetting half{"G-buffer RGBA16F", "G-buffer", {}};
   half.settings.gbufferPrecision = passes::GBufferPrecision::Float16;
   sweep.push_back(half);
+  if (std::any_of(scene.objects.begin(), scene.objects.end(), approximatesAnExactShape))
+    for (const glm::ivec2 mesh : {glm::ivec2(32, 16), glm::ivec2(64, 32), glm::ivec2(128, 64), glm::ivec2(256, 128)})
+      sweep.push_back({"mesh " + std::to_string(mesh.x) + "x" + std::to_string(mesh.y), "mesh", {}, mesh});
   return sweep;
 }
+
+namespace {
+
+// The ray-traced reference of every pose of the path.
+struct References {
+  std::vector<reference::ReferenceImage> images;
+  double medianMilliseconds = 0.0;
+};
+
+Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& scene, const std::vector<scene::ScenePose>& path,
+                                   const AccuracyBenchOptions& options, const std::string& what,
+                                   const std::function<void(const std::string& step)>& progress) {
+  auto tracer = reference::RayTracer::create(scene);
+  if (!tracer) return Error{tracer.error()};
+  References references;
+  std::vector<double> times;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    progress(what + ", pose " + std::to_string(i + 1) + "/" + std::to_string(path.size()));
+    auto truth = (*tracer)->render(path[i], {options.width, options.height, 1, 0});
+    if (!truth) return Error{truth.error()};
+    times.push_back(truth->milliseconds);
+    references.images.push_back(std::move(*truth));
+  }
+  references.medianMilliseconds = median(times);
+  return references;
+}
+
+// One setting along the path, compared with `truths`.
+Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene::ScenePose>& path,
+                                   const std::vector<reference::ReferenceImage>& truths, const AccuracyBenchOptions& options,
+                                   const AccuracySetting& setting) {
+  const ReflectionMethod method = setting.settings.method;
+  const bool measurePoints = hasAnalyticSphereMirror(r.scene()) && method == ReflectionMethod::Search;
+  // Warm-up at the first pose: buffer sizes, shader caches, coherence seeds.
+  if (auto warm = r.render(path.front(), options.width, options.height, setting.settings); !warm)
+    return Error{setting.name + ": " + warm.error()};
+  std::vector<double> times, psnrs, ssims, mismatches;
+  std::vector<std::uint64_t> drawn, searched;
+  ReflectionPointErrors points;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    auto frame = r.render(path[i], options.width, options.height, setting.settings);
+    if (!frame) return Error{setting.name + ": " + frame.error()};
+    times.push_back(frame->timings.totalMilliseconds);
+    auto comparison = compareWithReference(*frame, truths[i]);
+    if (!comparison) return Error{setting.name + ": " + comparison.error()};
+    psnrs.push_back(comparison->psnr);
+    ssims.push_back(comparison->ssim);
+    mismatches.push_back(comparison->mirrorMismatch);
+    drawn.push_back(3 * reflectionTriangles(r, *frame, method));
+    searched.push_back(frame->search.searched + frame->tessellation.midpointSearches.searched);
+    if (measurePoints) {
+      ReflectionPointErrors errors = measureReflectionPoints(r, path[i], *frame);
+      points.pixels.insert(points.pixels.end(), errors.pixels.begin(), errors.pixels.end());
+    }
+  }
+  AccuracyRow row{r.scene().name, setting.name, setting.family};
+  row.frameMilliseconds = median(times);
+  row.psnr = mean(psnrs);
+  row.ssim = mean(ssims);
+  row.mirrorMismatch = mean(mismatches);
+  if (!points.pixels.empty()) {
+    row.pointErrorP99 = points.percentile(0.99);
+    row.pointErrorMax = points.percentile(1.0);
+  }
+  row.reflectionVertices = medianOf(drawn);
+  row.searches = static_cast<std::uint32_t>(medianOf(searched));
+  return row;
+}
+
+}  // namespace
 
 Result<std::vector<AccuracyRow>> benchmarkAccuracy(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene,
                                                    const AccuracyBenchOptions& options,
@@ -102,67 +197,35 @@ Result<std::vector<AccuracyRow>> benchmarkAccuracy(gl::GlContext& context, std::
   std::vector<scene::ScenePose> path;
   for (int i = 0; i < options.poses; ++i) path.push_back(pathPose(*scene, options, i));
 
-  // One reference per pose, shared by every setting: the ray tracer is the slow part.
-  auto tracer = reference::RayTracer::create(scene);
-  if (!tracer) return Error{tracer.error()};
-  std::vector<reference::ReferenceImage> truths;
-  std::vector<double> traceTimes;
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    progress("ray-traced reference, pose " + std::to_string(i + 1) + "/" + std::to_string(path.size()));
-    auto truth = (*tracer)->render(path[i], {options.width, options.height, 1, 0});
-    if (!truth) return Error{truth.error()};
-    traceTimes.push_back(truth->milliseconds);
-    truths.push_back(std::move(*truth));
-  }
+  // One reference per pose, shared by every setting of the scene as given: the ray tracer is the slow part.
+  auto references = traceReferences(scene, path, options, "ray-traced reference", progress);
+  if (!references) return Error{references.error()};
   std::vector<AccuracyRow> rows;
   AccuracyRow reference{scene->name, "ray-traced reference", "reference"};
   reference.reference = true;
-  reference.frameMilliseconds = median(traceTimes);
+  reference.frameMilliseconds = references->medianMilliseconds;
   reference.psnr = 100.0;  // the PSNR ceiling compareWithReference reports for identical images
   reference.ssim = 1.0;
   rows.push_back(reference);
 
   auto renderer = render::Renderer::create(context, scene);
   if (!renderer) return Error{renderer.error()};
-  render::Renderer& r = **renderer;
-  const bool measurePoints = hasAnalyticSphereMirror(*scene);
   for (const AccuracySetting& setting : sweep) {
     progress(setting.name);
-    const ReflectionMethod method = setting.settings.method;
-    // Warm-up at the first pose: buffer sizes, shader caches, coherence seeds.
-    if (auto warm = r.render(path.front(), options.width, options.height, setting.settings); !warm)
-      return Error{setting.name + ": " + warm.error()};
-    std::vector<double> times, psnrs, ssims, mismatches;
-    std::vector<std::uint64_t> drawn, searched;
-    ReflectionPointErrors points;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-      auto frame = r.render(path[i], options.width, options.height, setting.settings);
-      if (!frame) return Error{setting.name + ": " + frame.error()};
-      times.push_back(frame->timings.totalMilliseconds);
-      auto comparison = compareWithReference(*frame, truths[i]);
-      if (!comparison) return Error{setting.name + ": " + comparison.error()};
-      psnrs.push_back(comparison->psnr);
-      ssims.push_back(comparison->ssim);
-      mismatches.push_back(comparison->mirrorMismatch);
-      drawn.push_back(3 * reflectionTriangles(r, *frame, method));
-      searched.push_back(frame->search.searched + frame->tessellation.midpointSearches.searched);
-      if (measurePoints && method == ReflectionMethod::Search) {
-        ReflectionPointErrors errors = measureReflectionPoints(r, path[i], *frame);
-        points.pixels.insert(points.pixels.end(), errors.pixels.begin(), errors.pixels.end());
-      }
+    Result<AccuracyRow> row = Error{""};
+    if (setting.mirrorMesh) {
+      // Another mesh is another scene: its own renderer and its own references.
+      auto variant = std::make_shared<const scene::Scene>(withMirrorMeshes(*scene, *setting.mirrorMesh));
+      auto truths = traceReferences(variant, path, options, setting.name + ": ray-traced reference", progress);
+      if (!truths) return Error{setting.name + ": " + truths.error()};
+      auto variantRenderer = render::Renderer::create(context, variant);
+      if (!variantRenderer) return Error{setting.name + ": " + variantRenderer.error()};
+      row = measureSetting(**variantRenderer, path, truths->images, options, setting);
+    } else {
+      row = measureSetting(**renderer, path, references->images, options, setting);
     }
-    AccuracyRow row{scene->name, setting.name, setting.family};
-    row.frameMilliseconds = median(times);
-    row.psnr = mean(psnrs);
-    row.ssim = mean(ssims);
-    row.mirrorMismatch = mean(mismatches);
-    if (!points.pixels.empty()) {
-      row.pointErrorP99 = points.percentile(0.99);
-      row.pointErrorMax = points.percentile(1.0);
-    }
-    row.reflectionVertices = medianOf(drawn);
-    row.searches = static_cast<std::uint32_t>(medianOf(searched));
-    rows.push_back(std::move(row));
+    if (!row) return Error{row.error()};
+    rows.push_back(std::move(*row));
   }
   markParetoFront(rows);
   return rows;

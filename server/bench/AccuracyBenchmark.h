@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "passes/ReflectionSettings.h"
@@ -26,15 +28,24 @@ struct AccuracyBenchOptions {
 // One point of the sweep: a name for people and the settings the renderer gets.
 struct AccuracySetting {
   std::string name;    // "adaptive pixels 0.5 px", unique within the sweep
-  std::string family;  // "environment map", "search", "adaptive", "full", "G-buffer"
+  std::string family;  // "environment map", "search", "adaptive", "full", "G-buffer", "mesh"
   passes::ReflectionSettings settings;
+  // Mesh mirrors with an exact shape they only approximate (AnalyticShape::exactSurface false) are
+  // re-tessellated as slices × stacks spheres; such a row is compared with the ray tracer of that
+  // mesh, and its reflection points with the exact shape's.
+  std::optional<glm::ivec2> mirrorMesh{};
 };
 
 // The sweep: the environment-map baseline (256 and 1024 px faces), the search without
 // tessellation, adaptive pixel (2 … 0.25 px) and angle (0.01 … 0.001) thresholds, full levels 1–4,
-// and the G-buffer at half and double resolution and in RGBA16F. Adaptive and G-buffer rows use
-// the default tessellation otherwise.
-std::vector<AccuracySetting> accuracySweep();
+// and the G-buffer at half and double resolution and in RGBA16F; on a scene with a mesh mirror
+// approximating an exact shape, also that mesh at 32×16 … 256×128. Adaptive, G-buffer and mesh rows
+// use the default tessellation otherwise.
+std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene);
+
+// `scene` with every mirror whose mesh approximates its exact sphere or ellipsoid given a
+// slices × stacks sphere mesh of that shape instead.
+scene::Scene withMirrorMeshes(const scene::Scene& scene, glm::ivec2 slicesAndStacks);
 
 struct AccuracyRow {
   std::string scene, setting, family;

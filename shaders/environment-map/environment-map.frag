@@ -13,10 +13,9 @@ uniform float reflectivity;     // the mirror's; its surface colour was already 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  ivec2 texel = gbufferTexelAt(gl_FragCoord.xy);
-  vec4 position = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
-  if (position.w <= 0.0) discard;  // another part of the mirror, or outside its (closed twin's) surface
-  vec3 normal = texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz;
-  vec3 reflected = reflect(normalize(position.xyz - eyePosition), normal);
+  vec3 position, normal;
+  // Another part of the mirror, or outside its (closed twin's) surface.
+  if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, position, normal)) discard;
+  vec3 reflected = reflect(normalize(position - eyePosition), normal);
   outColor = vec4(reflectivity * texture(environment, reflected).rgb, 1.0);
 }

@@ -36,16 +36,14 @@ vec3 attribute3(uint vertex, uint offset) {
 }
 
 void main() {
-  ivec2 texel = gbufferTexelAt(gl_FragCoord.xy);
-  vec4 surface = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
-  if (surface.w <= 0.0) discard;
-  vec3 normal = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
-  vec3 incoming = normalize(surface.xyz - eyePosition);
+  vec3 surface, normal;
+  if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, surface, normal)) discard;
+  vec3 incoming = normalize(surface - eyePosition);
   vec3 reflected = reflect(incoming, normal);
   float distance;
   uint triangle;
   vec2 barycentric;
-  if (!intersectBvh((worldToObject * vec4(surface.xyz, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, 1e30,
+  if (!intersectBvh((worldToObject * vec4(surface, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, 1e30,
                     distance, triangle, barycentric))
     discard;
   uint i0 = meshIndex[3u * triangle], i1 = meshIndex[3u * triangle + 1u], i2 = meshIndex[3u * triangle + 2u];
@@ -57,7 +55,7 @@ void main() {
             weights.z * vec2(meshVertex[8u * i2 + 6u], meshVertex[8u * i2 + 7u]);
   vec3 hit = (objectToWorld * vec4(position, 1.0)).xyz;
   // On the eye's ray through the mirror point, a whole path length away, like a virtual vertex.
-  float path = length(surface.xyz - eyePosition) + length(hit - surface.xyz);
+  float path = length(surface - eyePosition) + length(hit - surface);
   gl_FragDepth = virtualDepth(worldToClip, eyePosition + path * incoming, false);
-  outColor = depthOnly != 0 ? vec4(0.0) : vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface.xyz), 1.0);
+  outColor = depthOnly != 0 ? vec4(0.0) : vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface), 1.0);
 }

@@ -39,19 +39,19 @@ void main() {
   vec3 normalDx = dFdx(inFragment.worldNormal), normalDy = dFdy(inFragment.worldNormal);
   vec2 uvDx = dFdx(inFragment.surfaceUv), uvDy = dFdy(inFragment.surfaceUv);
 
-  ivec3 texel = ivec3(gbufferTexelAt(gl_FragCoord.xy), layer);
-  vec4 surface = texelFetch(gbufferPosition, texel, 0);
-  if (surface.w <= 0.0) discard;  // another part of the mirror, or no surface here
-  vec3 incoming = normalize(surface.xyz - eyePosition);
-  vec3 reflected = reflect(incoming, normalize(texelFetch(gbufferNormal, texel, 0).xyz));
+  vec3 surface, surfaceNormal;
+  // Off this part of the mirror (or its surface): not this part's pixel.
+  if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, surface, surfaceNormal)) discard;
+  vec3 incoming = normalize(surface - eyePosition);
+  vec3 reflected = reflect(incoming, surfaceNormal);
 
   vec3 a = inFragment.corner[0], edge1 = inFragment.corner[1] - a, edge2 = inFragment.corner[2] - a;
   vec3 plane = cross(edge1, edge2);
   float incidence = dot(reflected, plane);
   if (incidence == 0.0) discard;
-  float distance = dot(a - surface.xyz, plane) / incidence;
+  float distance = dot(a - surface, plane) / incidence;
   if (!(distance > 0.0)) discard;
-  vec3 hit = surface.xyz + distance * reflected;
+  vec3 hit = surface + distance * reflected;
   // Barycentric weights of the hit, and how far outside the triangle it lies in world units.
   float area2 = dot(plane, plane);
   vec3 weights;
@@ -64,7 +64,7 @@ void main() {
   float pixel = max(length(pointDx), length(pointDy));
   if (outside > kEdgeTolerance * twiceArea / max(max(heights.x, heights.y), heights.z)) discard;
 
-  gl_FragDepth = virtualDepth(worldToClip, eyePosition + (length(surface.xyz - eyePosition) + distance) * incoming, outside > 0.0);
+  gl_FragDepth = virtualDepth(worldToClip, eyePosition + (length(surface - eyePosition) + distance) * incoming, outside > 0.0);
   if (depthOnly != 0) {
     outColor = vec4(0.0);
     return;
@@ -75,5 +75,5 @@ void main() {
   vec2 screenStep = abs(determinant(gram)) > 1e-30 ? inverse(gram) * vec2(dot(step, pointDx), dot(step, pointDy)) : vec2(0.0);
   vec3 normal = inFragment.worldNormal + screenStep.x * normalDx + screenStep.y * normalDy;
   vec2 uv = inFragment.surfaceUv + screenStep.x * uvDx + screenStep.y * uvDy;
-  outColor = vec4(reflectivity * shadeSurface(hit, normal, uv, surface.xyz), 1.0);
+  outColor = vec4(reflectivity * shadeSurface(hit, normal, uv, surface), 1.0);
 }

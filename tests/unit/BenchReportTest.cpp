@@ -7,7 +7,9 @@
 #include <sstream>
 #include <vector>
 
+#include "bench/AccuracyBenchmark.h"
 #include "bench/BenchReport.h"
+#include "scene/builtin/BuiltinScenes.h"
 
 using namespace specula;
 
@@ -179,4 +181,25 @@ TEST(AccuracyReport, CrowdedSettingsGetLabelsThatDoNotOverlap) {
   ASSERT_EQ(heights.size(), rows.size());
   std::sort(heights.begin(), heights.end());
   for (std::size_t i = 1; i < heights.size(); ++i) EXPECT_GT(heights[i] - heights[i - 1], 0.02) << "labels " << i - 1 << " and " << i;
+}
+
+TEST(AccuracySweep, MeshMirrorsApproximatingAnExactShapeGetMeshResolutionRows) {
+  const scene::Scene exact = *scene::makeBuiltinScene("checker-sphere");
+  const scene::Scene mesh = *scene::makeBuiltinScene("mesh-sphere");
+  const auto meshRows = [](const std::vector<bench::AccuracySetting>& sweep) {
+    return std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.mirrorMesh.has_value(); });
+  };
+  EXPECT_EQ(meshRows(bench::accuracySweep(exact)), 0) << "the exact sphere has no mesh to vary";
+  EXPECT_EQ(meshRows(bench::accuracySweep(mesh)), 4);
+  // The re-meshed sphere lies on the exact shape, with its normals.
+  const scene::Scene coarse = bench::withMirrorMeshes(mesh, {32, 16});
+  const scene::SceneObject& mirror = coarse.objects[0];
+  ASSERT_TRUE(mirror.mirror);
+  const scene::Mesh& sphere = coarse.meshes[mirror.mesh];
+  EXPECT_EQ(sphere.triangleCount(), 2u * 32 * (16 - 1));  // one triangle per slice at each pole, two elsewhere
+  for (const scene::Vertex& v : sphere.vertices) {
+    EXPECT_NEAR(glm::length(v.position - mirror.mirror->analytic->center), mirror.mirror->analytic->radii.x, 1e-5f);
+    EXPECT_NEAR(glm::dot(v.normal, glm::normalize(v.position)), 1.0f, 1e-5f);
+  }
+  EXPECT_EQ(coarse.meshes[coarse.objects[1].mesh].name, mesh.meshes[mesh.objects[1].mesh].name) << "other objects keep their meshes";
 }

@@ -56,7 +56,6 @@ void TessellationPass::execute(const FrameContext& frame) {
     split_.set("mirrorRect", glm::vec4(glm::vec2(covered.low) / perPixel - margin, glm::vec2(covered.high) / perPixel - margin));
     const math::Bounds& bounds = frame.worldBounds[mirror->mirrorObject];
     split_.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
-    split_.set("convexPart", mirror->kind == scene::SurfaceKind::Convex ? 1 : 0);
     tessellateMirror(frame, *mirror);
   }
   gl.Disable(GL_RASTERIZER_DISCARD);

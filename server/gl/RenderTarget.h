@@ -18,6 +18,7 @@ class RenderTarget {
   int width() const { return width_; }
   int height() const { return height_; }
   GLuint colorTexture() const { return color_.id(); }
+  GLuint depthStencilTexture() const { return depthStencil_.id(); }
 
   // Binds the framebuffer and sets the viewport to cover it (a surfaceless context starts at 0×0).
   void bind() const;

@@ -98,6 +98,13 @@ Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 
   return {};
 }
 
+glm::vec4 ReflectionResources::coveredFramePixels(int layer) const {
+  // The G-buffer is the frame widened by the margin, at texelsPerPixel texels per pixel.
+  const TexelRect& covered = covered_[static_cast<std::size_t>(layer)];
+  const glm::vec2 margin(margin_);
+  return glm::vec4(glm::vec2(covered.low) / texelsPerPixel() - margin, glm::vec2(covered.high) / texelsPerPixel() - margin);
+}
+
 void ReflectionResources::resetCoherence() {
   // Unsolved last frame means "no seed": every vertex starts cold.
   ReflectedVertex unsolved{};

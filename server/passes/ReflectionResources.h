@@ -70,6 +70,8 @@ class ReflectionResources {
   // The texels a mirror covers now (after the G-buffer pass), and those that changed this frame:
   // last frame's and this frame's cover together, which the pyramid must rebuild.
   TexelRect& coveredRect(int layer) { return covered_[static_cast<std::size_t>(layer)]; }
+  // The same cover in frame pixels (GL origin, bottom left): low x, y, high x, y.
+  glm::vec4 coveredFramePixels(int layer) const;
   TexelRect& changedRect(int layer) { return changed_[static_cast<std::size_t>(layer)]; }
 
   // Forgets every vertex's last texel, so the next search starts cold (camera jump, new scene).

@@ -49,11 +49,7 @@ void TessellationPass::execute(const FrameContext& frame) {
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     split_.use();
     setSearchMirror(split_, frame, *mirror);
-    // The G-buffer is the frame widened by the margin, at texelsPerPixel texels per pixel.
-    const TexelRect& covered = frame.reflections.coveredRect(mirror->layer);
-    const glm::vec2 margin(frame.reflections.margin());
-    const float perPixel = frame.reflections.texelsPerPixel();
-    split_.set("mirrorRect", glm::vec4(glm::vec2(covered.low) / perPixel - margin, glm::vec2(covered.high) / perPixel - margin));
+    split_.set("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
     const math::Bounds& bounds = frame.worldBounds[mirror->mirrorObject];
     split_.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
     tessellateMirror(frame, *mirror);

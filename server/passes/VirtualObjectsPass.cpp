@@ -27,8 +27,11 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   auto selfReflection =
       gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/self-reflection.frag"});
   if (!selfReflection) return Error{selfReflection.error()};
+  auto composite = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/reflection-composite.frag"});
+  if (!composite) return Error{composite.error()};
   return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
-                                                                    std::move(region.value()), std::move(selfReflection.value())));
+                                                                    std::move(region.value()), std::move(selfReflection.value()),
+                                                                    std::move(composite.value())));
 }
 
 std::span<const std::string_view> VirtualObjectsPass::reads() const { return kReads; }
@@ -62,7 +65,7 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlot
   }
 }
 
-void VirtualObjectsPass::drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror, bool depthOnly) const {
+void VirtualObjectsPass::drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror) const {
   const gl::GlApi& gl = frame.gl;
   const ReflectionResources& resources = frame.reflections;
   const ReflectionResources::MirrorBvh& bvh = resources.mirrorBvh(mirror.mirrorObject);
@@ -80,7 +83,6 @@ void VirtualObjectsPass::drawSelfReflection(const FrameContext& frame, const Mir
   selfReflection_.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
   selfReflection_.set("minDistance", bvh.minDistance);
   selfReflection_.set("reflectivity", frame.scene.materials[object.material].reflectivity);
-  selfReflection_.set("depthOnly", depthOnly ? 1 : 0);
   setSceneLighting(selfReflection_, frame.scene);
   setMaterial(selfReflection_, frame.scene.materials[object.material]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, bvh.nodes.id());
@@ -103,16 +105,36 @@ void VirtualObjectsPass::resetMirrorDepth(const FrameContext& frame) const {
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void VirtualObjectsPass::bindReflectionBuffer(const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  const glm::ivec2 size(frame.target.width(), frame.target.height());
+  if (size != reflectionSize_) {
+    reflection_ = gl::GlTexture(gl);  // immutable storage: replace it
+    gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
+    gl.TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, size.x, size.y);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    reflectionSize_ = size;
+  }
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, reflection_.id(), 0);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, frame.target.depthStencilTexture(), 0);
+  gl.Viewport(0, 0, size.x, size.y);
+}
+
 void VirtualObjectsPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
-  frame.target.bind();
-  gl.Enable(GL_FRAMEBUFFER_SRGB);
+  bindReflectionBuffer(frame);
+  gl.Disable(GL_FRAMEBUFFER_SRGB);  // linear until the composite writes the frame
+  gl.Disable(GL_BLEND);
+  gl.Disable(GL_SCISSOR_TEST);
+  gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const GLfloat nothing[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  gl.ClearBufferfv(GL_COLOR, 0, nothing);
   gl.Enable(GL_STENCIL_TEST);
   gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   gl.StencilMask(0);
   gl.Enable(GL_DEPTH_TEST);
   gl.Disable(GL_CULL_FACE);  // reflection flips winding; open meshes are two-sided anyway
-  gl.BlendFunc(GL_ONE, GL_ONE);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
   gl.ActiveTexture(GL_TEXTURE1);
@@ -130,44 +152,45 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setSceneLighting(*objects, frame.scene);
   }
 
-  // A mirror's parts lie in a row of the plan: its depth is reset before the first, and its
-  // background added after the last.
-  for (std::size_t i = 0; i < frame.plan.mirrors.size(); ++i) {
-    const MirrorSlots* mirror = frame.plan.mirrors[i];
-    const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
+  // Per mirror: its depth reset to the far plane, then each part's self-reflection and virtual
+  // objects; every fragment is an exact hit at its exact depth, so the nearest wins in one pass.
+  for (const MirrorSlots* mirror : frame.plan.mirrors) {
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
-    setForBoth("layer", mirror->layer);
-    setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
-    setForBoth("reflectivity", reflectivity);
     if (mirror->part == 0) resetMirrorDepth(frame);
-
-    // Depth of the nearest virtual surface, then shade only that surface, added over the mirror.
-    gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gl.Disable(GL_BLEND);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
-    setForBoth("depthOnly", 1);
-    if (mirror->seesItself) drawSelfReflection(frame, *mirror, true);
+    setForBoth("layer", mirror->layer);
+    setForBoth("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
+    setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
+    setForBoth("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
+    if (mirror->seesItself) drawSelfReflection(frame, *mirror);
     drawObjects(frame, *mirror);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    gl.Enable(GL_BLEND);
-    gl.DepthMask(GL_FALSE);
-    gl.DepthFunc(GL_EQUAL);
-    setForBoth("depthOnly", 0);
-    if (mirror->seesItself) drawSelfReflection(frame, *mirror, false);
-    drawObjects(frame, *mirror);
+  }
 
-    // Where no virtual object landed, the mirror reflects the background.
-    const bool lastPart = i + 1 == frame.plan.mirrors.size() || frame.plan.mirrors[i + 1]->mirrorObject != mirror->mirrorObject;
-    if (!lastPart) continue;
-    region_.use();
-    region_.set("reflectedBackground", reflectivity * frame.scene.background);
-    gl.BindVertexArray(emptyVertexArray_.id());
+  // Each mirror's reflection (or its reflected background) added over its surface in the frame.
+  frame.target.bind();
+  gl.Enable(GL_FRAMEBUFFER_SRGB);
+  gl.Disable(GL_DEPTH_TEST);
+  gl.Enable(GL_BLEND);
+  gl.BlendFunc(GL_ONE, GL_ONE);
+  composite_.use();
+  gl.ActiveTexture(GL_TEXTURE2);
+  gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
+  gl.ActiveTexture(GL_TEXTURE0);
+  composite_.set("reflection", 2);
+  gl.BindVertexArray(emptyVertexArray_.id());
+  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+    if (mirror->part != 0) continue;  // once per mirror
+    const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
+    gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
+    composite_.set("reflectedBackground", reflectivity * frame.scene.background);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
   }
   gl.Disable(GL_BLEND);
   gl.Disable(GL_STENCIL_TEST);
   gl.StencilMask(0xFF);
+  gl.Enable(GL_DEPTH_TEST);
   gl.DepthMask(GL_TRUE);
   gl.DepthFunc(GL_LESS);
 }

@@ -1,7 +1,7 @@
 #pragma once
-// Rasterizes each visible mirror's virtual objects into the mirror's stencil area, depth-tested
-// among themselves (nearest virtual surface wins), lit at the real objects' positions and added
-// with the mirror's reflectivity over its surface colour.
+// Rasterizes each visible mirror's virtual objects into the mirror's stencil area of a reflection
+// buffer, depth-tested among themselves (nearest surface wins), lit at the real objects' positions;
+// then adds each mirror's reflection, weighted by its reflectivity, over its surface colour.
 #include <memory>
 
 #include "base/Result.h"
@@ -22,16 +22,22 @@ class VirtualObjectsPass final : public Pass {
 
  private:
   VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region,
-                     gl::ShaderProgram selfReflection)
+                     gl::ShaderProgram selfReflection, gl::ShaderProgram composite)
       : objects_(std::move(objects)),
         tessellated_(std::move(tessellated)),
         region_(std::move(region)),
         selfReflection_(std::move(selfReflection)),
-        emptyVertexArray_(gl) {}
+        composite_(std::move(composite)),
+        emptyVertexArray_(gl),
+        framebuffer_(gl),
+        reflection_(gl) {}
+  // Sizes the reflection buffer like the frame (kept while the size stays) and binds it with the
+  // frame's depth and stencil.
+  void bindReflectionBuffer(const FrameContext& frame);
   // Sets the depth inside the mirror's stencil to the far plane.
   void resetMirrorDepth(const FrameContext& frame) const;
   // Where the part's reflected rays meet the mirror itself: the mirror's colour at that depth.
-  void drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror, bool depthOnly) const;
+  void drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror) const;
   // Draws the mirror's virtual objects with whichever program each needs.
   void drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const;
   // One reflected object from its own mesh and search slots (objects_ in use).
@@ -48,7 +54,11 @@ class VirtualObjectsPass final : public Pass {
   gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles
   gl::ShaderProgram region_;
   gl::ShaderProgram selfReflection_;
+  gl::ShaderProgram composite_;
   gl::GlVertexArray emptyVertexArray_;  // the full-screen triangle needs no attributes
+  gl::GlFramebuffer framebuffer_;       // the reflection buffer with the frame's depth and stencil
+  gl::GlTexture reflection_;            // RGBA16F, linear; alpha marks pixels something landed on
+  glm::ivec2 reflectionSize_{0};
 };
 
 }  // namespace specula::passes

@@ -4,7 +4,7 @@
 // object: nearer virtual objects still win, and what lies behind the mirror in its own reflection
 // stays hidden. The ray is cast per pixel from the G-buffer point against the mirror's own mesh,
 // as the ray tracer does with one bounce.
-#include "common/virtual-depth.glsl"
+#include "common/clip-depth.glsl"
 #include "common/gbuffer-texel.glsl"
 #include "common/shading.glsl"
 #include "common/triangle-bvh.glsl"
@@ -19,7 +19,6 @@ uniform mat3 normalToWorld;
 uniform mat4 worldToClip;     // the virtual objects' projection (far plane pushed out)
 uniform float minDistance;    // object space: nearer hits are the surface the ray starts on
 uniform float reflectivity;
-uniform int depthOnly;
 
 layout(std430, binding = 6) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
@@ -56,6 +55,6 @@ void main() {
   vec3 hit = (objectToWorld * vec4(position, 1.0)).xyz;
   // On the eye's ray through the mirror point, a whole path length away, like a virtual vertex.
   float path = length(surface - eyePosition) + length(hit - surface);
-  gl_FragDepth = virtualDepth(worldToClip, eyePosition + path * incoming, false);
-  outColor = depthOnly != 0 ? vec4(0.0) : vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface), 1.0);
+  gl_FragDepth = clipDepth(worldToClip, eyePosition + path * incoming);
+  outColor = vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface), 1.0);
 }

@@ -6,7 +6,7 @@
 // this the object point inside it is off by up to the tessellation threshold (many checker cells
 // where a floor is seen nearly edge-on), and on a concave part a triangle can stretch across two
 // images; with it, only coverage (which pixels a triangle is tried at) remains approximate.
-#include "common/virtual-depth.glsl"
+#include "common/clip-depth.glsl"
 #include "common/gbuffer-texel.glsl"
 #include "common/shading.glsl"
 
@@ -18,14 +18,13 @@ in FragmentData {
 } inFragment;
 
 uniform float reflectivity;  // the mirror's; its surface colour was already weighted by 1 − reflectivity
-uniform int depthOnly;       // 1 in the depth pre-pass: only the nearest virtual surface is shaded
 uniform sampler2DArray gbufferPosition;  // w > 0 on this part's texels
 uniform sampler2DArray gbufferNormal;
 uniform int layer;           // the part's G-buffer layer
 uniform vec3 eyePosition;
 uniform mat4 worldToClip;    // the virtual objects' projection (far plane pushed out)
 
-// A hit this share of the triangle's longest edge outside it still counts: float rounding on the
+// A hit this share of the triangle's shortest edge outside it still counts: float rounding on the
 // edge two triangles share must not leave a pixel to neither.
 const float kEdgeTolerance = 1e-4;
 
@@ -61,14 +60,9 @@ void main() {
   float twiceArea = sqrt(area2);
   vec3 heights = twiceArea / vec3(length(inFragment.corner[2] - inFragment.corner[1]), length(edge2), length(edge1));
   float outside = max(0.0, max(max(-weights.x * heights.x, -weights.y * heights.y), -weights.z * heights.z));
-  float pixel = max(length(pointDx), length(pointDy));
   if (outside > kEdgeTolerance * twiceArea / max(max(heights.x, heights.y), heights.z)) discard;
 
-  gl_FragDepth = virtualDepth(worldToClip, eyePosition + (length(surface - eyePosition) + distance) * incoming, outside > 0.0);
-  if (depthOnly != 0) {
-    outColor = vec4(0.0);
-    return;
-  }
+  gl_FragDepth = clipDepth(worldToClip, eyePosition + (length(surface - eyePosition) + distance) * incoming);
   // Carry normal and uv from the rasterized point to the hit, through the screen step between them.
   vec3 step = hit - point;
   mat2 gram = mat2(dot(pointDx, pointDx), dot(pointDx, pointDy), dot(pointDx, pointDy), dot(pointDy, pointDy));

@@ -20,10 +20,13 @@ in VertexData {
 
 uniform int everyCornerReflected;  // 1 on concave and saddle parts
 uniform vec2 frameSize;            // pixels
+uniform vec4 mirrorRect;           // the part's bounds on screen in frame pixels (GL origin): low x, y, high x, y
 
 // The triangle is widened by this much on screen: its virtual image is right to the tessellation
 // threshold, and the fragment shader keeps only pixels whose reflected ray really meets it, so every
-// pixel the triangle shows in must be proposed (conservative rasterization).
+// pixel the triangle shows in must be proposed (conservative rasterization). A triangle smaller than
+// that on screen is widened by its own size: its corners' images are exact, so its true image lies
+// within about its size of them.
 const float kDilationPixels = 2.0;
 const float kMaxCornerShift = 8.0;  // × kDilationPixels: sharp corners move no further
 
@@ -41,12 +44,18 @@ void main() {
   if (everyCornerReflected != 0 && (allFlags & kReflectionHidden) != 0) return;
   for (int i = 0; i < 3; ++i)
     if (dot(inVertex[i].reflectionNormal, inVertex[(i + 1) % 3].reflectionNormal) < 0.0) return;
-  // Each corner moves away from the other two so that every edge moves out by kDilationPixels;
+  // Each corner moves away from the other two so that every edge moves out by the dilation;
   // corners behind the eye (w <= 0) leave the triangle as it is.
   vec4 position[3] = vec4[3](gl_in[0].gl_Position, gl_in[1].gl_Position, gl_in[2].gl_Position);
   if (position[0].w > 0.0 && position[1].w > 0.0 && position[2].w > 0.0) {
     vec2 screen[3];
     for (int i = 0; i < 3; ++i) screen[i] = position[i].xy / position[i].w * 0.5 * frameSize;
+    float dilation = min(kDilationPixels, max(max(distance(screen[0], screen[1]), distance(screen[1], screen[2])),
+                                              distance(screen[2], screen[0])));
+    // Wholly beside the part on screen, even widened: no pixel to propose (and no fragment to test).
+    vec2 low = min(screen[0], min(screen[1], screen[2])) + 0.5 * frameSize - kMaxCornerShift * dilation;
+    vec2 high = max(screen[0], max(screen[1], screen[2])) + 0.5 * frameSize + kMaxCornerShift * dilation;
+    if (any(lessThan(high, mirrorRect.xy)) || any(greaterThan(low, mirrorRect.zw))) return;
     float winding = sign((screen[1].x - screen[0].x) * (screen[2].y - screen[0].y) - (screen[1].y - screen[0].y) * (screen[2].x - screen[0].x));
     if (winding != 0.0) {
       vec2 outward[3];  // unit normal of edge i (corner i → i + 1), pointing away from the triangle
@@ -61,7 +70,7 @@ void main() {
         float along = dot(bisector, a);
         vec2 shift = along > 1e-3 ? bisector / along : a + b;
         if (length(shift) > kMaxCornerShift) shift *= kMaxCornerShift / length(shift);
-        position[i].xy += kDilationPixels * shift / (0.5 * frameSize) * position[i].w;
+        position[i].xy += dilation * shift / (0.5 * frameSize) * position[i].w;
       }
     }
   }

@@ -1,6 +1,8 @@
 #pragma once
 // Move-only owners of GL object names; the name is deleted with the owner. The context must be
 // current on the thread that creates, uses and destroys them.
+#include <atomic>
+#include <cstdint>
 #include <utility>
 
 #include "gl/GlApi.h"
@@ -9,10 +11,15 @@ namespace specula::gl {
 
 enum class GlObjectType { Buffer, Texture, Framebuffer, VertexArray, Query };
 
+// GL object names created so far, of every type, on every thread: tests check that frames of one
+// size create none.
+inline std::atomic<std::uint64_t> glObjectsCreated{0};
+
 template <GlObjectType Type>
 class GlObject {
  public:
   explicit GlObject(const GlApi& gl) : gl_(&gl) {
+    glObjectsCreated.fetch_add(1, std::memory_order_relaxed);
     if constexpr (Type == GlObjectType::Buffer) gl.GenBuffers(1, &id_);
     if constexpr (Type == GlObjectType::Texture) gl.GenTextures(1, &id_);
     if constexpr (Type == GlObjectType::Framebuffer) gl.GenFramebuffers(1, &id_);

@@ -16,6 +16,13 @@ TexelRect TexelRect::united(const TexelRect& other) const {
 
 namespace {
 
+void allocateSlots(const gl::GlApi& gl, const gl::GlBuffer& buffer, std::uint32_t slots) {
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(slots, 1) * sizeof(ReflectedVertex)),
+                nullptr, GL_DYNAMIC_COPY);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
 template <class T>
 void upload(const gl::GlApi& gl, const gl::GlBuffer& buffer, const std::vector<T>& data) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
@@ -28,9 +35,7 @@ void upload(const gl::GlApi& gl, const gl::GlBuffer& buffer, const std::vector<T
 ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots)
     : gl_(&gl), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
       statistics_(gl), tessellation_(gl) {
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, reflected_.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(slots.slotCount, 1) * sizeof(ReflectedVertex)),
-                nullptr, GL_DYNAMIC_COPY);
+  allocateSlots(gl, reflected_, slots.slotCount);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
   for (const auto& [mirrorObject, parts] : slots.parts) {
@@ -114,6 +119,18 @@ void ReflectionResources::resetCoherence() {
   gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(initial.size() * sizeof(ReflectedVertex)),
                      initial.data());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+gl::GlBuffer ReflectionResources::exchangeReflectedVertices(std::optional<gl::GlBuffer> next) {
+  gl::GlBuffer current = std::move(reflected_);
+  if (next) {
+    reflected_ = std::move(*next);
+  } else {
+    reflected_ = gl::GlBuffer(*gl_);
+    allocateSlots(*gl_, reflected_, slots_.slotCount);
+    resetCoherence();
+  }
+  return current;
 }
 
 void ReflectionResources::resetStatistics() {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "base/Result.h"
@@ -76,6 +77,9 @@ class ReflectionResources {
 
   // Forgets every vertex's last texel, so the next search starts cold (camera jump, new scene).
   void resetCoherence();
+  // Hands over the slot buffer (every vertex's last search result) and searches from `next`'s from
+  // now on; an empty `next` is a fresh buffer that starts cold. Lets one renderer serve several views.
+  gl::GlBuffer exchangeReflectedVertices(std::optional<gl::GlBuffer> next);
   void resetStatistics();
   SearchStatistics readStatistics() const;
   std::vector<ReflectedVertex> readReflectedVertices() const;

@@ -52,6 +52,8 @@ void ScenePass::execute(const FrameContext& frame) {
     setSceneLighting(*program, frame.scene);
   }
   for (std::size_t i = 0; i < frame.scene.objects.size(); ++i) {
+    // Frustum culling: an object wholly outside the view costs its vertices and nothing else.
+    if (!boundsInFrustum(frame.worldBounds[i], frame.pose.camera, frame.view.aspect, 0.0f)) continue;
     const scene::SceneObject& object = frame.scene.objects[i];
     const bool quadric = object.mirror && object.mirror->exactQuadric();
     const gl::ShaderProgram& program = quadric ? quadric_ : program_;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "gl/GlObject.h"
 #include "gl/RenderTarget.h"
@@ -38,6 +39,13 @@ Status addPass(std::map<std::string_view, std::unique_ptr<passes::Pass>, std::le
   return {};
 }
 
+// Mesa's software rasterizers (llvmpipe, softpipe, swrast) by their GL_RENDERER string.
+bool isCpuRasterizer(const std::string& renderer) {
+  for (const char* name : {"llvmpipe", "softpipe", "swrast"})
+    if (renderer.find(name) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace
 
 Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots)
@@ -45,7 +53,8 @@ Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> s
       scene_(std::move(scene)),
       meshes_(context.api(), scene_->meshes),
       slots_(std::move(slots)),
-      reflections_(context.api(), *scene_, slots_) {
+      reflections_(context.api(), *scene_, slots_),
+      cpuRasterizer_(isCpuRasterizer(context.info().renderer)) {
   for (const scene::Mesh& mesh : scene_->meshes) {
     math::Bounds bounds;
     for (const scene::Vertex& v : mesh.vertices) bounds.add(v.position);
@@ -90,8 +99,12 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   if (auto problem = passes::reflectionSettingsProblem(settings)) return Error{"cannot render: " + *problem};
   const Clock::time_point start = Clock::now();
   const gl::GlApi& gl = context_.api();
-  auto target = gl::RenderTarget::create(gl, width, height);
-  if (!target) return Error{target.error()};
+  if (!target_ || target_->width() != width || target_->height() != height) {
+    target_.reset();  // free the old frame before allocating the new one
+    auto target = gl::RenderTarget::create(gl, width, height);
+    if (!target) return Error{target.error()};
+    target_.emplace(std::move(*target));
+  }
 
   std::vector<math::Bounds> worldBounds;
   worldBounds.reserve(scene_->objects.size());
@@ -106,28 +119,44 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, plan.gbufferPrecision); !status)
       return Error{status.error()};
   }
-  const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, view, plan, settings, target.value(), reflections_};
+  const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, view, plan, settings, *target_, reflections_};
 
-  // Timestamps bracket each stage: stage i runs between stamps i and i + 1.
-  std::vector<gl::GlQuery> stamps;
-  for (std::size_t i = 0; i < plan.passes.size() + 2; ++i) stamps.emplace_back(gl);
-  gl.QueryCounter(stamps[0].id(), GL_TIMESTAMP);
+  // Stage i runs between marks i and i + 1: GPU timestamps, or on a CPU rasterizer, which runs a
+  // pass's draws only when a later command flushes them (timestamps there charged the scene pass's
+  // rasterization to whichever pass came next), the wall clock after the pass has finished.
+  const std::size_t marks = plan.passes.size() + 2;
+  while (stamps_.size() < marks) stamps_.emplace_back(gl);
+  std::vector<double> wallMarks;
+  const auto mark = [&](std::size_t i) {
+    if (!cpuRasterizer_) return gl.QueryCounter(stamps_[i].id(), GL_TIMESTAMP);
+    gl.Finish();
+    wallMarks.push_back(millisecondsSince(start));
+  };
+  mark(0);
   for (std::size_t i = 0; i < plan.passes.size(); ++i) {
     passes_.find(plan.passes[i])->second->execute(frame);
-    gl.QueryCounter(stamps[i + 1].id(), GL_TIMESTAMP);
+    mark(i + 1);
   }
-  RenderedFrame result{width, height, target->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision};
+  RenderedFrame result{width, height, target_->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision};
   for (const passes::MirrorSlots* mirror : plan.mirrors)
     if (mirror->part == 0) result.drawnMirrors.push_back(mirror->mirrorObject);
-  gl.QueryCounter(stamps.back().id(), GL_TIMESTAMP);
+  mark(marks - 1);
   if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
   if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();
 
-  std::vector<GLuint64> times(stamps.size(), 0);
-  for (std::size_t i = 0; i < stamps.size(); ++i) gl.GetQueryObjectui64v(stamps[i].id(), GL_QUERY_RESULT, &times[i]);
-  for (std::size_t i = 0; i + 1 < stamps.size(); ++i) {
+  std::vector<double> times(marks, 0.0);
+  for (std::size_t i = 0; i < marks; ++i) {
+    if (cpuRasterizer_) {
+      times[i] = wallMarks[i];
+      continue;
+    }
+    GLuint64 nanoseconds = 0;
+    gl.GetQueryObjectui64v(stamps_[i].id(), GL_QUERY_RESULT, &nanoseconds);
+    times[i] = static_cast<double>(nanoseconds) * 1e-6;
+  }
+  for (std::size_t i = 0; i + 1 < marks; ++i) {
     const std::string name = i < plan.passes.size() ? std::string(plan.passes[i]) : "readback";
-    result.timings.stages.push_back({name, static_cast<double>(times[i + 1] - times[i]) * 1e-6});
+    result.timings.stages.push_back({name, times[i + 1] - times[i]});
   }
   if (const GLenum error = gl.GetError(); error != GL_NO_ERROR)
     return Error{"GL error 0x" + std::to_string(error) + " while rendering (driver: " + context_.info().renderer + ")"};

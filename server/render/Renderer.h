@@ -11,6 +11,7 @@
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMeshes.h"
+#include "gl/RenderTarget.h"
 #include "math/Bounds.h"
 #include "passes/FrameContext.h"
 #include "passes/Pass.h"
@@ -47,6 +48,15 @@ class Renderer {
 
   // Forgets last frame's reflection texels: the next frame's searches start cold.
   void resetCoherence() { reflections_.resetCoherence(); }
+  // One view's search state (each reflected vertex's last texel), parked while other views render.
+  struct ViewCoherence {
+    std::optional<gl::GlBuffer> reflectedVertices;  // empty: a view not rendered yet, starting cold
+  };
+  // Hands over the current view's search state and continues from `next`'s: a view rendered before
+  // resumes warm.
+  ViewCoherence exchangeCoherence(ViewCoherence next) {
+    return {reflections_.exchangeReflectedVertices(std::move(next.reflectedVertices))};
+  }
   // The last frame's search results, one per slot of reflectionSlots() (a GPU readback).
   std::vector<passes::ReflectedVertex> readReflectedVertices() const { return reflections_.readReflectedVertices(); }
   // The last frame's tessellated vertices (midpoints included), when it was tessellated.
@@ -66,6 +76,9 @@ class Renderer {
   passes::ReflectionSlots slots_;
   passes::ReflectionResources reflections_;
   std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>> passes_;
+  std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
+  std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
+  bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock
 };
 
 }  // namespace specula::render

@@ -11,11 +11,25 @@ Result<std::unique_ptr<FrameRenderer>> GlFrameRenderer::create(std::unique_ptr<g
   return std::unique_ptr<FrameRenderer>(new GlFrameRenderer(std::move(context), std::move(*renderer)));
 }
 
-GlFrameRenderer::~GlFrameRenderer() { renderer_.reset(); }
+GlFrameRenderer::~GlFrameRenderer() {
+  parked_.clear();  // GL buffers: before the renderer and its context
+  renderer_.reset();
+}
 
 Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
-  if (job.session != lastSession_) renderer_->resetCoherence();  // last frame's texels were another view's
-  lastSession_ = job.session;
+  if (job.session != lastSession_) {
+    // Park the last session's search state and resume this one's (cold if it has none).
+    render::Renderer::ViewCoherence resumed;
+    for (auto it = parked_.begin(); it != parked_.end(); ++it)
+      if (it->first == job.session) {
+        resumed = std::move(it->second);
+        parked_.erase(it);
+        break;
+      }
+    parked_.emplace_back(lastSession_, renderer_->exchangeCoherence(std::move(resumed)));
+    if (parked_.size() > kMaxParkedViews) parked_.pop_front();
+    lastSession_ = job.session;
+  }
   const auto start = std::chrono::steady_clock::now();
   auto frame = renderer_->render(job.pose, job.width, job.height, job.settings);
   if (!frame) return Error{frame.error()};

@@ -94,6 +94,7 @@ namespace specula::gl {
   X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                   \
   X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                                   \
   X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                                                     \
+  X(PFNGLDISPATCHCOMPUTEINDIRECTPROC, DispatchComputeIndirect)                                     \
   X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                                         \
   X(PFNGLGENQUERIESPROC, GenQueries)                                                               \
   X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                                         \

@@ -5,7 +5,12 @@
 namespace specula::passes {
 
 TessellationBuffers::TessellationBuffers(const gl::GlApi& gl)
-    : gl_(&gl), working_{{gl::GlBuffer(gl)}, {gl::GlBuffer(gl)}}, finished_{gl::GlBuffer(gl)}, splits_{gl::GlBuffer(gl)},
+    : gl_(&gl),
+      working_{{gl::GlBuffer(gl)}, {gl::GlBuffer(gl)}},
+      finished_{gl::GlBuffer(gl)},
+      splits_{gl::GlBuffer(gl)},
+      requests_{gl::GlBuffer(gl)},
+      requestCounts_{gl::GlBuffer(gl)},
       counters_(gl), midpointStatistics_(gl) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
@@ -48,6 +53,17 @@ bool TessellationBuffers::reserveWorking(int list, std::size_t triangles) {
 bool TessellationBuffers::reserveSplits(std::size_t triangles) {
   if (triangles > kMaxTriangles) return false;
   reserve(splits_, triangles * kSplitBytes, 0);
+  return true;
+}
+
+bool TessellationBuffers::reserveRequests(std::size_t triangles, std::size_t runs) {
+  if (triangles > kMaxTriangles) return false;
+  reserve(requests_, std::max<std::size_t>(triangles, 1) * kRequestBytes, 0);
+  const std::vector<std::uint32_t> zero(4 * std::max<std::size_t>(runs, 1), 0);
+  reserve(requestCounts_, zero.size() * sizeof(std::uint32_t), 0);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, requestCounts_.buffer.id());
+  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(zero.size() * sizeof(std::uint32_t)), zero.data());
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   return true;
 }
 

@@ -53,7 +53,9 @@ class TessellationBuffers {
  public:
   static constexpr std::size_t kRecordBytes = sizeof(TessellatedVertex);
   static constexpr std::size_t kTriangleBytes = 3 * kRecordBytes;
-  static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 16;  // one EdgeSplit
+  static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 32;  // one EdgeSplit
+  static constexpr std::size_t kRequestBytes = 3 * sizeof(std::uint32_t);  // a triangle's edge requests, at most
+  static constexpr std::size_t kRunRequestBytes = 4 * sizeof(std::uint32_t);  // RunRequests: count, indirect dispatch
   static constexpr std::size_t kMaxTriangles = std::size_t{1} << 20;  // per list: 240 MiB
 
   explicit TessellationBuffers(const gl::GlApi& gl);
@@ -64,12 +66,17 @@ class TessellationBuffers {
   // in the split buffer; false past kMaxTriangles.
   bool reserveWorking(int list, std::size_t triangles);
   bool reserveSplits(std::size_t triangles);
+  // Room for the edge requests of `triangles` working triangles, split into `runs` lists, whose
+  // counts start at zero.
+  bool reserveRequests(std::size_t triangles, std::size_t runs);
   // Make room for `more` finished triangles after the current ones, keeping them.
   bool reserveFinished(std::size_t more);
 
   GLuint working(int list) const { return working_[list].buffer.id(); }
   GLuint finished() const { return finished_.buffer.id(); }
   GLuint splits() const { return splits_.buffer.id(); }
+  GLuint requests() const { return requests_.buffer.id(); }
+  GLuint requestCounts() const { return requestCounts_.buffer.id(); }
   GLuint counters() const { return counters_.id(); }
   GLuint midpointStatistics() const { return midpointStatistics_.id(); }
   std::size_t finishedCount() const { return finishedCount_; }
@@ -101,7 +108,7 @@ class TessellationBuffers {
   void reserve(GrowingBuffer& target, std::size_t bytes, std::size_t keepBytes);
 
   const gl::GlApi* gl_;
-  GrowingBuffer working_[2], finished_, splits_;
+  GrowingBuffer working_[2], finished_, splits_, requests_, requestCounts_;
   gl::GlBuffer counters_, midpointStatistics_;
   std::size_t counterCapacity_ = 0;  // objects
   std::size_t finishedCount_ = 0;

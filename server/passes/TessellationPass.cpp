@@ -9,21 +9,30 @@ namespace specula::passes {
 namespace {
 constexpr std::array<std::string_view, 2> kReads{"mirror-gbuffer", "reflected-vertices"};
 constexpr std::array<std::string_view, 1> kWrites{"tessellated-triangles"};
-constexpr GLuint kGroupSize = 64;  // local_size_x of tessellation-split.comp
+constexpr GLuint kGroupSize = 64;  // local_size_x of the tessellation kernels
 // Storage-buffer bindings of shaders/tessellation.
 constexpr GLuint kMeshVerticesBinding = 0, kStatisticsBinding = 2, kWorkingBinding = 3, kSplitsBinding = 4,
-                 kCountersBinding = 5, kMeshIndicesBinding = 6;
+                 kCountersBinding = 5, kMeshIndicesBinding = 6, kRequestsBinding = 7, kRequestCountsBinding = 8;
+
+GLuint groupsFor(std::size_t invocations) { return static_cast<GLuint>((invocations + kGroupSize - 1) / kGroupSize); }
 }  // namespace
 
 Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlApi& gl) {
-  auto seed = gl::ShaderProgram::build(gl, {"tessellation/tessellation-seed.vert"});
+  const auto build = [&](std::initializer_list<std::string_view> files) { return gl::ShaderProgram::build(gl, files); };
+  auto seed = build({"tessellation/tessellation-seed.vert"});
   if (!seed) return Error{seed.error()};
-  auto split = gl::ShaderProgram::build(gl, {"tessellation/tessellation-split.comp"});
-  if (!split) return Error{split.error()};
-  auto emit = gl::ShaderProgram::build(gl, {"tessellation/tessellation-emit.vert", "tessellation/tessellation-emit.geom"});
+  auto classify = build({"tessellation/tessellation-classify.comp"});
+  if (!classify) return Error{classify.error()};
+  auto dispatch = build({"tessellation/tessellation-dispatch.comp"});
+  if (!dispatch) return Error{dispatch.error()};
+  auto search = build({"tessellation/tessellation-search.comp"});
+  if (!search) return Error{search.error()};
+  auto decide = build({"tessellation/tessellation-decide.comp"});
+  if (!decide) return Error{decide.error()};
+  auto emit = build({"tessellation/tessellation-emit.vert", "tessellation/tessellation-emit.geom"});
   if (!emit) return Error{emit.error()};
-  return std::unique_ptr<TessellationPass>(
-      new TessellationPass(gl, std::move(seed.value()), std::move(split.value()), std::move(emit.value())));
+  return std::unique_ptr<TessellationPass>(new TessellationPass(
+      gl, Programs{std::move(*seed), std::move(*classify), std::move(*dispatch), std::move(*search), std::move(*decide), std::move(*emit)}));
 }
 
 std::span<const std::string_view> TessellationPass::reads() const { return kReads; }
@@ -34,24 +43,33 @@ void TessellationPass::execute(const FrameContext& frame) {
   TessellationBuffers& buffers = frame.reflections.tessellation();
   buffers.beginFrame();
   const TessellationSettings& settings = frame.settings.tessellation;
-  split_.use();
-  setSearchUniforms(split_, frame);
-  split_.set("crackFree", settings.mode == TessellationMode::CrackFree ? 1 : 0);
-  split_.set("pixelMetric", settings.metric == TessellationMetric::Pixels ? 1 : 0);
-  split_.set("threshold", settings.threshold);
-  split_.set("gbufferWorldToClip", frame.gbufferWorldToClip());
-  split_.set("frameWorldToClip", frame.view.worldToClip());
-  split_.set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
+  for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search, &programs_.decide}) {
+    program->use();
+    program->set("crackFree", settings.mode == TessellationMode::CrackFree ? 1 : 0);
+    program->set("pixelMetric", settings.metric == TessellationMetric::Pixels ? 1 : 0);
+    program->set("threshold", settings.threshold);
+    program->set("frameWorldToClip", frame.view.worldToClip());
+    program->set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
+  }
+  for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search}) {
+    program->use();
+    setSearchUniforms(*program, frame);
+  }
+  programs_.classify.use();
+  programs_.classify.set("gbufferWorldToClip", frame.gbufferWorldToClip());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kStatisticsBinding, buffers.midpointStatistics());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, buffers.counters());
   gl.Enable(GL_RASTERIZER_DISCARD);
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
-    split_.use();
-    setSearchMirror(split_, frame, *mirror);
-    split_.set("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
+    for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search}) {
+      program->use();
+      setSearchMirror(*program, frame, *mirror);
+    }
+    programs_.classify.use();
+    programs_.classify.set("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
     const math::Bounds& bounds = frame.worldBounds[mirror->mirrorObject];
-    split_.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
+    programs_.classify.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
     tessellateMirror(frame, *mirror);
   }
   gl.Disable(GL_RASTERIZER_DISCARD);
@@ -67,10 +85,6 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
 
   // Every reflected object of the mirror goes through the rounds together, each in its own run of
   // the working list, so a round costs one readback whatever the number of objects.
-  struct ObjectRun {
-    const ReflectionSlotRange* range;
-    std::size_t first = 0, triangles = 0;
-  };
   std::vector<ObjectRun> runs;
   std::size_t total = 0;
   for (const ReflectionSlotRange& range : mirror.reflected) {
@@ -85,7 +99,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     buffers.ranges().push_back({mirror.mirrorObject, run.range, 0, static_cast<GLsizei>(run.triangles), true});
     statistics.finishedTriangles += static_cast<std::uint32_t>(run.triangles);
   };
-  if (!buffers.reserveSplits(total) || !buffers.reserveWorking(0, total)) {
+  if (!buffers.reserveSplits(total) || !buffers.reserveWorking(0, total) || !buffers.reserveRequests(total, runs.size())) {
     statistics.capped = true;
     for (const ObjectRun& run : runs) drawFromMesh(run);
     return;
@@ -93,26 +107,15 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
 
   // Round 0 decides on the meshes themselves. Objects nothing splits are drawn from their meshes;
   // only the others are copied, with their corners' search results, into the working list.
-  split_.use();
-  split_.set("fromMesh", 1);
   buffers.resetCounters(runs.size());
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const std::size_t mesh = frame.scene.objects[runs[i].range->object].mesh;
-    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshVerticesBinding, frame.meshes.vertexBuffer(mesh));
-    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, frame.meshes.indexBuffer(mesh));
-    frame.setReflectedObject(split_, *runs[i].range);
-    dispatchSplit(frame, runs[i].first, runs[i].triangles, i);
-  }
-  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  decideRound(frame, runs, true);
   std::vector<TessellationBuffers::RoundCounts> counts = buffers.readCounters(runs.size());
-  split_.set("fromMesh", 0);
   if (statistics.trianglesPerRound.empty()) statistics.trianglesPerRound.push_back(0);
   statistics.trianglesPerRound[0] += static_cast<std::uint32_t>(total);
 
   std::vector<ObjectRun> splitting;
   std::vector<TessellationBuffers::RoundCounts> splittingCounts;
-  seed_.use();
+  programs_.seed.use();
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (counts[i].children == 0) {
       drawFromMesh(runs[i]);
@@ -120,7 +123,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     }
     splitting.push_back(runs[i]);
     splittingCounts.push_back(counts[i]);
-    frame.setReflectedObject(seed_, *runs[i].range);
+    frame.setReflectedObject(programs_.seed, *runs[i].range);
     gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers.working(0),
                        static_cast<GLintptr>(runs[i].first * TessellationBuffers::kTriangleBytes),
                        static_cast<GLsizeiptr>(runs[i].triangles * TessellationBuffers::kTriangleBytes));
@@ -139,15 +142,12 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     if (round > 0) {
       if (statistics.trianglesPerRound.size() <= static_cast<std::size_t>(round)) statistics.trianglesPerRound.push_back(0);
       statistics.trianglesPerRound[static_cast<std::size_t>(round)] += static_cast<std::uint32_t>(total);
-      last = last || !buffers.reserveSplits(runs.back().first + runs.back().triangles);
+      last = last || !buffers.reserveSplits(total) || !buffers.reserveRequests(total, runs.size());
       counts.assign(runs.size(), {});
       if (!last) {
-        split_.use();
         buffers.resetCounters(runs.size());
         gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(list));
-        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
-        for (std::size_t i = 0; i < runs.size(); ++i) dispatchSplit(frame, runs[i].first, runs[i].triangles, i);
-        gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        decideRound(frame, runs, false);
         counts = buffers.readCounters(runs.size());
       }
     }
@@ -181,12 +181,53 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   }
 }
 
-void TessellationPass::dispatchSplit(const FrameContext& frame, std::size_t firstTriangle, std::size_t triangles,
-                                     std::size_t counterIndex) const {
-  split_.set("firstTriangle", static_cast<unsigned>(firstTriangle));
-  split_.set("triangleCount", static_cast<unsigned>(triangles));
-  split_.set("counterIndex", static_cast<unsigned>(counterIndex));
-  frame.gl.DispatchCompute(static_cast<GLuint>((triangles + kGroupSize - 1) / kGroupSize), 1, 1);
+void TessellationPass::decideRound(const FrameContext& frame, const std::vector<ObjectRun>& runs, bool fromMesh) const {
+  const gl::GlApi& gl = frame.gl;
+  const TessellationBuffers& buffers = frame.reflections.tessellation();
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRequestsBinding, buffers.requests());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRequestCountsBinding, buffers.requestCounts());
+  // One run's uniforms: where its triangles are, and in round 0 its mesh and search slots.
+  const auto setRun = [&](const gl::ShaderProgram& program, std::size_t i) {
+    program.set("firstTriangle", static_cast<unsigned>(runs[i].first));
+    program.set("triangleCount", static_cast<unsigned>(runs[i].triangles));
+    program.set("runIndex", static_cast<unsigned>(i));
+    if (!fromMesh) return;
+    const std::size_t mesh = frame.scene.objects[runs[i].range->object].mesh;
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshVerticesBinding, frame.meshes.vertexBuffer(mesh));
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, frame.meshes.indexBuffer(mesh));
+    frame.setReflectedObject(program, *runs[i].range);
+  };
+
+  programs_.classify.use();
+  programs_.classify.set("fromMesh", fromMesh ? 1 : 0);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    setRun(programs_.classify, i);
+    gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
+  }
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  programs_.dispatch.use();
+  programs_.dispatch.set("runCount", static_cast<unsigned>(runs.size()));
+  gl.DispatchCompute(groupsFor(runs.size()), 1, 1);
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+
+  programs_.search.use();
+  programs_.search.set("fromMesh", fromMesh ? 1 : 0);
+  gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffers.requestCounts());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    setRun(programs_.search, i);
+    // The run's work-group count sits after its request count.
+    gl.DispatchComputeIndirect(static_cast<GLintptr>(i * TessellationBuffers::kRunRequestBytes + sizeof(std::uint32_t)));
+  }
+  gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  programs_.decide.use();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    setRun(programs_.decide, i);
+    gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
+  }
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void TessellationPass::emit(const FrameContext& frame, int from, std::size_t firstTriangle, std::size_t triangles,
@@ -195,9 +236,9 @@ void TessellationPass::emit(const FrameContext& frame, int from, std::size_t fir
   if (count == 0) return;
   const gl::GlApi& gl = frame.gl;
   TessellationBuffers& buffers = frame.reflections.tessellation();
-  emit_.use();
-  emit_.set("finishAll", finishAll ? 1 : 0);
-  emit_.set("emitChildren", emitChildren ? 1 : 0);
+  programs_.emit.use();
+  programs_.emit.set("finishAll", finishAll ? 1 : 0);
+  programs_.emit.set("emitChildren", emitChildren ? 1 : 0);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(from));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
   gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, target,

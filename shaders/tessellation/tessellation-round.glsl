@@ -1,0 +1,74 @@
+// What the kernels of a tessellation round share (tessellation-classify, -search, -decide): the
+// working triangles and where their corners come from, the edge bookkeeping, the frame's projection
+// and the errors of Szabo 2013, ch. 4. Each object of the round is one run of triangles
+// [firstTriangle, firstTriangle + triangleCount) and has its own request list and counters.
+#include "common/edge-split.glsl"
+#include "common/reflected-vertex-buffer.glsl"
+
+layout(std430, binding = 3) readonly buffer WorkingTriangles {
+  TessellatedVertex records[];
+};
+// Round 0 reads the object's mesh and search slots instead: most triangles split nothing and then
+// never need copying into a working list.
+layout(std430, binding = 0) readonly buffer MeshVertices {
+  float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
+};
+layout(std430, binding = 6) readonly buffer MeshIndices {
+  uint meshIndex[];
+};
+layout(std430, binding = 4) buffer EdgeSplits {
+  EdgeSplit splits[];
+};
+// Edges whose midpoint needs a search, (triangle − firstTriangle) << 2 | edge; run r's list starts
+// at 3 × its first triangle.
+layout(std430, binding = 7) buffer EdgeRequests {
+  uint requests[];
+};
+struct RunRequests {
+  uint count;
+  uint searchGroups[3];  // the search's indirect dispatch for the run
+};
+layout(std430, binding = 8) buffer RequestCounts {
+  RunRequests runs[];
+};
+
+uniform int fromMesh;        // 1 in round 0: corners from the mesh, not the working list
+uniform mat4 objectToWorld;
+uniform mat3 normalToWorld;
+uniform uint firstSlot;
+uniform uint firstTriangle;  // this object's triangles in the working list
+uniform uint triangleCount;
+uniform uint runIndex;       // this object's request list and pair of counters
+uniform int crackFree;       // 1: each edge decided alone; 0: Szabo's worst edge splits all three
+uniform int pixelMetric;     // 1: error in pixels; 0: Szabo's angle error
+uniform float threshold;
+uniform mat4 frameWorldToClip;
+uniform vec2 frameSize;
+
+const int kAngleMetricNever = 1;  // an angle error never exceeds 1: that threshold means no split
+
+TessellatedVertex loadCorner(uint local, uint triangle, int k) {
+  if (fromMesh == 0) return records[3u * triangle + uint(k)];
+  uint index = meshIndex[3u * local + uint(k)], at = 8u * index;
+  vec3 position = vec3(meshVertex[at], meshVertex[at + 1u], meshVertex[at + 2u]);
+  vec3 normal = vec3(meshVertex[at + 3u], meshVertex[at + 4u], meshVertex[at + 5u]);
+  vec2 uv = vec2(meshVertex[at + 6u], meshVertex[at + 7u]);
+  return makeTessellatedVertex((objectToWorld * vec4(position, 1.0)).xyz, normalToWorld * normal, uv, reflected[firstSlot + index]);
+}
+
+vec2 framePixel(vec3 world) {
+  vec4 clip = frameWorldToClip * vec4(world, 1.0);
+  return (clip.xy / clip.w * 0.5 + 0.5) * frameSize;
+}
+
+// A midpoint without a reflection point (off the G-buffer) would only cut its triangle into pieces
+// the virtual-objects pass drops.
+bool solved(TessellatedVertex midpoint) { return (int(midpoint.virtualFlags.w) & kReflectionUnsolved) == 0; }
+
+// How far the rasterizer draws the edge midpoint from where its true reflection projects.
+float pixelError(TessellatedVertex a, TessellatedVertex b, TessellatedVertex midpoint) {
+  if (!solved(midpoint)) return 0.0;  // splitting cannot help
+  return length(framePixel(midpoint.virtualFlags.xyz) - framePixel(0.5 * (a.virtualFlags.xyz + b.virtualFlags.xyz)));
+}
+
+bool exceeds(float error) { return pixelMetric != 0 || threshold < float(kAngleMetricNever) ? error >= threshold : false; }

@@ -57,8 +57,6 @@ namespace specula::gl {
   X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                                       \
   X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                                     \
   X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData)                                                 \
-  X(PFNGLBEGINTRANSFORMFEEDBACKPROC, BeginTransformFeedback)                                       \
-  X(PFNGLENDTRANSFORMFEEDBACKPROC, EndTransformFeedback)                                           \
   X(PFNGLBUFFERDATAPROC, BufferData)                                                               \
   X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                         \
   X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                                                   \

@@ -12,15 +12,14 @@ constexpr std::array<std::string_view, 1> kWrites{"tessellated-triangles"};
 constexpr GLuint kGroupSize = 64;  // local_size_x of the tessellation kernels
 // Storage-buffer bindings of shaders/tessellation.
 constexpr GLuint kMeshVerticesBinding = 0, kStatisticsBinding = 2, kWorkingBinding = 3, kSplitsBinding = 4,
-                 kCountersBinding = 5, kMeshIndicesBinding = 6, kRequestsBinding = 7, kRequestCountsBinding = 8;
+                 kCountersBinding = 5, kMeshIndicesBinding = 6, kRequestsBinding = 7, kRequestCountsBinding = 8,
+                 kFinishedBinding = 9, kNextWorkingBinding = 10;
 
 GLuint groupsFor(std::size_t invocations) { return static_cast<GLuint>((invocations + kGroupSize - 1) / kGroupSize); }
 }  // namespace
 
 Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlApi& gl) {
   const auto build = [&](std::initializer_list<std::string_view> files) { return gl::ShaderProgram::build(gl, files); };
-  auto seed = build({"tessellation/tessellation-seed.vert"});
-  if (!seed) return Error{seed.error()};
   auto classify = build({"tessellation/tessellation-classify.comp"});
   if (!classify) return Error{classify.error()};
   auto dispatch = build({"tessellation/tessellation-dispatch.comp"});
@@ -29,10 +28,10 @@ Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlA
   if (!search) return Error{search.error()};
   auto decide = build({"tessellation/tessellation-decide.comp"});
   if (!decide) return Error{decide.error()};
-  auto emit = build({"tessellation/tessellation-emit.vert", "tessellation/tessellation-emit.geom"});
+  auto emit = build({"tessellation/tessellation-emit.comp"});
   if (!emit) return Error{emit.error()};
-  return std::unique_ptr<TessellationPass>(new TessellationPass(
-      gl, Programs{std::move(*seed), std::move(*classify), std::move(*dispatch), std::move(*search), std::move(*decide), std::move(*emit)}));
+  return std::unique_ptr<TessellationPass>(
+      new TessellationPass(Programs{std::move(*classify), std::move(*dispatch), std::move(*search), std::move(*decide), std::move(*emit)}));
 }
 
 std::span<const std::string_view> TessellationPass::reads() const { return kReads; }
@@ -60,7 +59,6 @@ void TessellationPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kStatisticsBinding, buffers.midpointStatistics());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, buffers.counters());
-  gl.Enable(GL_RASTERIZER_DISCARD);
   for (const MirrorSlots* mirror : frame.plan.mirrors) {
     for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search}) {
       program->use();
@@ -72,8 +70,6 @@ void TessellationPass::execute(const FrameContext& frame) {
     programs_.classify.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
     tessellateMirror(frame, *mirror);
   }
-  gl.Disable(GL_RASTERIZER_DISCARD);
-  gl.BindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
   buffers.finishStatistics();
 }
 
@@ -99,23 +95,21 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     buffers.ranges().push_back({mirror.mirrorObject, run.range, 0, static_cast<GLsizei>(run.triangles), true});
     statistics.finishedTriangles += static_cast<std::uint32_t>(run.triangles);
   };
-  if (!buffers.reserveSplits(total) || !buffers.reserveWorking(0, total) || !buffers.reserveRequests(total, runs.size())) {
+  if (!buffers.reserveSplits(total) || !buffers.reserveRequests(total, runs.size())) {
     statistics.capped = true;
     for (const ObjectRun& run : runs) drawFromMesh(run);
     return;
   }
 
   // Round 0 decides on the meshes themselves. Objects nothing splits are drawn from their meshes;
-  // only the others are copied, with their corners' search results, into the working list.
+  // the others' rounds begin there too, reading corners from the mesh and its search slots.
   buffers.resetCounters(runs.size());
   decideRound(frame, runs, true);
   std::vector<TessellationBuffers::RoundCounts> counts = buffers.readCounters(runs.size());
   if (statistics.trianglesPerRound.empty()) statistics.trianglesPerRound.push_back(0);
   statistics.trianglesPerRound[0] += static_cast<std::uint32_t>(total);
-
   std::vector<ObjectRun> splitting;
   std::vector<TessellationBuffers::RoundCounts> splittingCounts;
-  programs_.seed.use();
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (counts[i].children == 0) {
       drawFromMesh(runs[i]);
@@ -123,19 +117,15 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
     }
     splitting.push_back(runs[i]);
     splittingCounts.push_back(counts[i]);
-    frame.setReflectedObject(programs_.seed, *runs[i].range);
-    gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers.working(0),
-                       static_cast<GLintptr>(runs[i].first * TessellationBuffers::kTriangleBytes),
-                       static_cast<GLsizeiptr>(runs[i].triangles * TessellationBuffers::kTriangleBytes));
-    gl.BeginTransformFeedback(GL_TRIANGLES);
-    frame.meshes.draw(frame.scene.objects[runs[i].range->object].mesh);
-    gl.EndTransformFeedback();
   }
   runs = std::move(splitting);
   counts = std::move(splittingCounts);
 
-  int list = 0;
+  // Working lists ping-pong: round 0 reads the meshes and writes list 0, round r reads list
+  // (r − 1) % 2 and writes the other.
   for (int round = 0; !runs.empty(); ++round) {
+    const bool fromMesh = round == 0;
+    const int from = (round + 1) % 2, to = round % 2;
     total = 0;
     for (const ObjectRun& run : runs) total += run.triangles;
     bool last = round >= settings.maxLevel;
@@ -146,14 +136,14 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
       counts.assign(runs.size(), {});
       if (!last) {
         buffers.resetCounters(runs.size());
-        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(list));
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(from));
         decideRound(frame, runs, false);
         counts = buffers.readCounters(runs.size());
       }
     }
     std::size_t children = 0, unsplit = 0;
     for (const auto& count : counts) children += count.children;
-    if (!last && children > 0 && !buffers.reserveWorking(1 - list, children)) last = true;  // past the cap: finish here
+    if (!last && children > 0 && !buffers.reserveWorking(to, children)) last = true;  // past the cap: finish here
     if (last && round < settings.maxLevel) statistics.capped = true;
     if (last)
       for (std::size_t i = 0; i < runs.size(); ++i) counts[i] = {0, static_cast<std::uint32_t>(runs[i].triangles)};
@@ -162,22 +152,35 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
       statistics.capped = true;
       return;
     }
+
+    // Emission: each object's unsplit triangles go to its range of the finished list, its children
+    // to its run of the next working list; the counters, zeroed again, hand out places.
+    buffers.resetCounters(runs.size());
+    programs_.emit.use();
+    programs_.emit.set("fromMesh", fromMesh ? 1 : 0);
+    programs_.emit.set("finishAll", last ? 1 : 0);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
+    if (!fromMesh) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(from));
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kFinishedBinding, buffers.finished());
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kNextWorkingBinding, buffers.working(to));
     std::vector<ObjectRun> next;
     std::size_t nextTotal = 0;
     for (std::size_t i = 0; i < runs.size(); ++i) {
+      setRun(frame, programs_.emit, runs, i, fromMesh);
+      programs_.emit.set("finishedBase", static_cast<unsigned>(buffers.finishedCount()));
+      programs_.emit.set("childrenBase", static_cast<unsigned>(nextTotal));
+      gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
       if (counts[i].unsplit > 0) {
-        emit(frame, list, runs[i].first, runs[i].triangles, last, false, buffers.finished(), buffers.finishedCount(), counts[i].unsplit);
         buffers.ranges().push_back({mirror.mirrorObject, runs[i].range, static_cast<GLint>(buffers.finishedCount()),
                                     static_cast<GLsizei>(counts[i].unsplit), false});
         buffers.addFinished(counts[i].unsplit);
       }
       if (counts[i].children == 0) continue;
-      emit(frame, list, runs[i].first, runs[i].triangles, false, true, buffers.working(1 - list), nextTotal, counts[i].children);
       next.push_back({runs[i].range, nextTotal, counts[i].children});
       nextTotal += counts[i].children;
     }
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     runs = std::move(next);
-    list = 1 - list;
   }
 }
 
@@ -187,22 +190,11 @@ void TessellationPass::decideRound(const FrameContext& frame, const std::vector<
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRequestsBinding, buffers.requests());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRequestCountsBinding, buffers.requestCounts());
-  // One run's uniforms: where its triangles are, and in round 0 its mesh and search slots.
-  const auto setRun = [&](const gl::ShaderProgram& program, std::size_t i) {
-    program.set("firstTriangle", static_cast<unsigned>(runs[i].first));
-    program.set("triangleCount", static_cast<unsigned>(runs[i].triangles));
-    program.set("runIndex", static_cast<unsigned>(i));
-    if (!fromMesh) return;
-    const std::size_t mesh = frame.scene.objects[runs[i].range->object].mesh;
-    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshVerticesBinding, frame.meshes.vertexBuffer(mesh));
-    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, frame.meshes.indexBuffer(mesh));
-    frame.setReflectedObject(program, *runs[i].range);
-  };
 
   programs_.classify.use();
   programs_.classify.set("fromMesh", fromMesh ? 1 : 0);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    setRun(programs_.classify, i);
+    setRun(frame, programs_.classify, runs, i, fromMesh);
     gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
   }
   gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -215,7 +207,7 @@ void TessellationPass::decideRound(const FrameContext& frame, const std::vector<
   programs_.search.set("fromMesh", fromMesh ? 1 : 0);
   gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffers.requestCounts());
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    setRun(programs_.search, i);
+    setRun(frame, programs_.search, runs, i, fromMesh);
     // The run's work-group count sits after its request count.
     gl.DispatchComputeIndirect(static_cast<GLintptr>(i * TessellationBuffers::kRunRequestBytes + sizeof(std::uint32_t)));
   }
@@ -224,31 +216,22 @@ void TessellationPass::decideRound(const FrameContext& frame, const std::vector<
 
   programs_.decide.use();
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    setRun(programs_.decide, i);
+    setRun(frame, programs_.decide, runs, i, fromMesh);
     gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
   }
   gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void TessellationPass::emit(const FrameContext& frame, int from, std::size_t firstTriangle, std::size_t triangles,
-                            bool finishAll, bool emitChildren, GLuint target, std::size_t targetTriangle,
-                            std::size_t count) const {
-  if (count == 0) return;
-  const gl::GlApi& gl = frame.gl;
-  TessellationBuffers& buffers = frame.reflections.tessellation();
-  programs_.emit.use();
-  programs_.emit.set("finishAll", finishAll ? 1 : 0);
-  programs_.emit.set("emitChildren", emitChildren ? 1 : 0);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorkingBinding, buffers.working(from));
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplitsBinding, buffers.splits());
-  gl.BindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, target,
-                     static_cast<GLintptr>(targetTriangle * TessellationBuffers::kTriangleBytes),
-                     static_cast<GLsizeiptr>(count * TessellationBuffers::kTriangleBytes));
-  gl.BindVertexArray(emptyVertexArray_.id());
-  gl.BeginTransformFeedback(GL_TRIANGLES);
-  gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(3 * firstTriangle), static_cast<GLsizei>(3 * triangles));
-  gl.EndTransformFeedback();
-  gl.BindVertexArray(0);
+void TessellationPass::setRun(const FrameContext& frame, const gl::ShaderProgram& program, const std::vector<ObjectRun>& runs,
+                              std::size_t i, bool fromMesh) const {
+  program.set("firstTriangle", static_cast<unsigned>(runs[i].first));
+  program.set("triangleCount", static_cast<unsigned>(runs[i].triangles));
+  program.set("runIndex", static_cast<unsigned>(i));
+  if (!fromMesh) return;
+  const std::size_t mesh = frame.scene.objects[runs[i].range->object].mesh;
+  frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshVerticesBinding, frame.meshes.vertexBuffer(mesh));
+  frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndicesBinding, frame.meshes.indexBuffer(mesh));
+  frame.setReflectedObject(program, *runs[i].range);
 }
 
 }  // namespace specula::passes

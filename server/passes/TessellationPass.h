@@ -1,14 +1,13 @@
 #pragma once
 // Adaptive tessellation of reflected geometry (Szabo 2013, ch. 4, shaders/tessellation): per
-// visible mirror and reflected object, rounds of split decisions and transform-feedback emission
-// (geometry shader) turn the object's triangles into finer ones where a straight virtual edge would
-// miss the curved reflection, up to the level limit. A round decides in three compute steps: a cheap
-// classification of every triangle lists the edges whose midpoint needs a search, the search runs
-// only for those, and a decision per triangle reads the results.
+// visible mirror and reflected object, rounds of split decisions and emission turn the object's
+// triangles into finer ones where a straight virtual edge would miss the curved reflection, up to
+// the level limit. A round runs four compute kernels: a cheap classification of every triangle lists
+// the edges whose midpoint needs a search, the search runs only for those, a decision per triangle
+// reads the results, and emission writes the finished triangles and the next round's children.
 #include <memory>
 
 #include "base/Result.h"
-#include "gl/GlObject.h"
 #include "gl/ShaderProgram.h"
 #include "passes/Pass.h"
 
@@ -25,28 +24,25 @@ class TessellationPass final : public Pass {
 
  private:
   struct Programs {
-    gl::ShaderProgram seed, classify, dispatch, search, decide, emit;
+    gl::ShaderProgram classify, dispatch, search, decide, emit;
   };
   // One object's triangles in the round's working list.
   struct ObjectRun {
     const ReflectionSlotRange* range;
     std::size_t first = 0, triangles = 0;
   };
-  TessellationPass(const gl::GlApi& gl, Programs programs) : programs_(std::move(programs)), emptyVertexArray_(gl) {}
+  explicit TessellationPass(Programs programs) : programs_(std::move(programs)) {}
   // Tessellates every object the mirror reflects; finished triangles are appended to the frame's list.
   void tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror);
   // Decides which edges of every run's triangles split (classify, search, decide) and counts each
   // run's children and unsplit triangles into its pair of counters. `fromMesh`: round 0, whose
   // corners come from the objects' meshes and search slots.
   void decideRound(const FrameContext& frame, const std::vector<ObjectRun>& runs, bool fromMesh) const;
-  // Writes the unsplit triangles (emitChildren false) or the children of the split ones among the
-  // working triangles [firstTriangle, + triangles) of list `from` to `target` at `targetTriangle`;
-  // `count` is how many that is.
-  void emit(const FrameContext& frame, int from, std::size_t firstTriangle, std::size_t triangles, bool finishAll,
-            bool emitChildren, GLuint target, std::size_t targetTriangle, std::size_t count) const;
+  // Sets the uniforms of run `i` (and in round 0 binds its mesh) for a kernel of the round.
+  void setRun(const FrameContext& frame, const gl::ShaderProgram& program, const std::vector<ObjectRun>& runs, std::size_t i,
+              bool fromMesh) const;
 
   Programs programs_;
-  gl::GlVertexArray emptyVertexArray_;  // emission reads its records from storage buffers
 };
 
 }  // namespace specula::passes

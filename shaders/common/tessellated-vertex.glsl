@@ -1,4 +1,4 @@
-// One vertex of a tessellated virtual triangle, as transform feedback writes it and storage buffers
+// One vertex of a tessellated virtual triangle, as the emission kernel writes it and storage buffers
 // read it: five vec4, 80 bytes, three per triangle. The GL twin is passes/TessellationBuffers.
 #include "common/reflected-vertex.glsl"
 

@@ -15,9 +15,9 @@
 
 namespace specula::passes {
 
-// Finished triangles of one reflected object in one mirror (one range per round that finished some).
+// Finished triangles of one reflected object in one mirror part (one range per round that finished some).
 struct TessellatedRange {
-  std::size_t mirrorObject = 0;
+  const MirrorSlots* mirror = nullptr;  // the part they reflect in
   const ReflectionSlotRange* object = nullptr;  // the reflected object and its search slots
   GLint firstTriangle = 0;
   GLsizei triangles = 0;

@@ -68,6 +68,7 @@ void TessellationPass::execute(const FrameContext& frame) {
     programs_.classify.set("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
     const math::Bounds& bounds = frame.worldBounds[mirror->mirrorObject];
     programs_.classify.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
+    programs_.classify.set("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
     tessellateMirror(frame, *mirror);
   }
   buffers.finishStatistics();
@@ -92,7 +93,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   if (runs.empty()) return;
   statistics.inputTriangles += static_cast<std::uint32_t>(total);
   const auto drawFromMesh = [&](const ObjectRun& run) {
-    buffers.ranges().push_back({mirror.mirrorObject, run.range, 0, static_cast<GLsizei>(run.triangles), true});
+    buffers.ranges().push_back({&mirror, run.range, 0, static_cast<GLsizei>(run.triangles), true});
     statistics.finishedTriangles += static_cast<std::uint32_t>(run.triangles);
   };
   if (!buffers.reserveSplits(total) || !buffers.reserveRequests(total, runs.size())) {
@@ -171,7 +172,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
       programs_.emit.set("childrenBase", static_cast<unsigned>(nextTotal));
       gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
       if (counts[i].unsplit > 0) {
-        buffers.ranges().push_back({mirror.mirrorObject, runs[i].range, static_cast<GLint>(buffers.finishedCount()),
+        buffers.ranges().push_back({&mirror, runs[i].range, static_cast<GLint>(buffers.finishedCount()),
                                     static_cast<GLsizei>(counts[i].unsplit), false});
         buffers.addFinished(counts[i].unsplit);
       }

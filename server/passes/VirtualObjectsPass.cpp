@@ -19,8 +19,8 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   auto objects = gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects.vert", "virtual-objects/virtual-objects.geom",
                                                "virtual-objects/virtual-objects.frag"});
   if (!objects) return Error{objects.error()};
-  auto tessellated = gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects-tessellated.vert", "virtual-objects/virtual-objects.geom",
-                                                   "virtual-objects/virtual-objects.frag"});
+  auto tessellated =
+      gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects-tessellated.vert", "virtual-objects/virtual-objects.frag"});
   if (!tessellated) return Error{tessellated.error()};
   auto region = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/mirror-region.frag"});
   if (!region) return Error{region.error()};
@@ -51,7 +51,7 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlot
   }
   const TessellationBuffers& tessellation = frame.reflections.tessellation();
   for (const TessellatedRange& range : tessellation.ranges()) {
-    if (range.mirrorObject != mirror.mirrorObject || range.triangles == 0) continue;
+    if (range.mirror != &mirror || range.triangles == 0) continue;  // another mirror, or another part of this one
     if (range.fromMesh) {
       objects_.use();
       drawMesh(frame, *range.object);

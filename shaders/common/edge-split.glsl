@@ -4,6 +4,7 @@
 
 struct EdgeSplit {
   TessellatedVertex midpoint[3];
-  ivec4 mask;  // x: bit e set when edge e splits; y: edges searched (bits 0-2) and long beside the mirror (bits 3-5)
+  ivec4 mask;  // x: bit e set when edge e splits; y: edges searched (bits 0-2), long beside the mirror
+               // (bits 3-5), and bit 6 when the triangle is drawable unsplit
   vec4 error;  // xyz: each searched edge's error (pixels, or Szabo's angle error)
 };

@@ -175,13 +175,13 @@ bool residualSlope(vec2 x, vec3 r0, vec2 axis, out vec3 slope) {
   return hasPlus || hasMinus;
 }
 
-// Up to five Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's
+// Up to three Gauss–Newton steps on the bilinear surface, staying within 2.5 texels of the climb's
 // winner. `blocked`: a step would have left the mirror (part): the best point lies on its outline,
 // where a vertex without a reflection point in the part ends up.
 vec2 refine(ivec2 texel, out bool blocked) {
   vec2 x = vec2(texel);
   blocked = false;
-  for (int iteration = 0; iteration < 5; ++iteration) {
+  for (int iteration = 0; iteration < 3; ++iteration) {
     vec3 r0, jx, jy;
     if (!residualAt(x, r0) || !residualSlope(x, r0, vec2(1.0, 0.0), jx) || !residualSlope(x, r0, vec2(0.0, 1.0), jy)) {
       blocked = true;

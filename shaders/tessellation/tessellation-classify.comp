@@ -5,12 +5,14 @@
 // nothing cost little.
 layout(local_size_x = 64) in;
 
+#include "common/reflectable-triangle.glsl"
 #include "common/search-core.glsl"
 #include "tessellation/tessellation-round.glsl"
 
 uniform mat4 gbufferWorldToClip;
 uniform vec4 mirrorRect;    // the mirror's bounds on screen in frame pixels: low x, y, high x, y
 uniform vec4 mirrorSphere;  // the mirror's bounding sphere in world space: centre, radius
+uniform int everyCornerReflected;  // 1 on concave and saddle parts (common/reflectable-triangle.glsl)
 
 // With the pixel metric, an edge longer than this share of its distance from the mirror (at least
 // the mirror's radius) splits whatever its midpoint shows: the reflection of a large triangle near a
@@ -87,6 +89,9 @@ void main() {
         if (crackFree != 0 ? exceeds(error[e]) : exceeds(worst)) search[e] = true;
     }
   }
+  // Whether the virtual-objects pass would draw the triangle unsplit: one it would drop is not
+  // written to the finished list at all.
+  bool drawable = reflectableTriangle(corner, everyCornerReflected != 0);
   int requested = 0, nearBits = 0;
   for (int e = 0; e < 3; ++e) {
     if (near[e]) nearBits |= 1 << e;
@@ -94,6 +99,6 @@ void main() {
     requested |= 1 << e;
     requests[3u * firstTriangle + atomicAdd(runs[runIndex].count, 1u)] = (local << 2) | uint(e);
   }
-  splits[triangle].mask = ivec4(0, requested | (nearBits << 3), 0, 0);
+  splits[triangle].mask = ivec4(0, requested | (nearBits << 3) | (drawable ? kDrawable : 0), 0, 0);
   splits[triangle].error = vec4(error, 0.0);
 }

@@ -28,6 +28,6 @@ void main() {
   }
   splits[triangle].mask.x = mask;
   const uint kChildren[4] = uint[4](0u, 2u, 3u, 4u);  // by number of split edges
-  if (mask == 0) atomicAdd(counters[2u * runIndex + 1u], 1u);
-  else atomicAdd(counters[2u * runIndex], kChildren[bitCount(mask)]);
+  if (mask != 0) atomicAdd(counters[2u * runIndex], kChildren[bitCount(mask)]);
+  else if ((splits[triangle].mask.y & kDrawable) != 0) atomicAdd(counters[2u * runIndex + 1u], 1u);  // the others are dropped
 }

@@ -45,7 +45,9 @@ void main() {
   TessellatedVertex c[3] = TessellatedVertex[3](loadCorner(local, triangle, 0), loadCorner(local, triangle, 1), loadCorner(local, triangle, 2));
   int mask = finishAll != 0 ? 0 : splits[triangle].mask.x;
   if (mask == 0) {
-    writeFinished(c[0], c[1], c[2]);
+    // Undrawable ones are left out, as decide counted them; the last round, which decided nothing,
+    // writes every triangle.
+    if (finishAll != 0 || (splits[triangle].mask.y & kDrawable) != 0) writeFinished(c[0], c[1], c[2]);
     return;
   }
   TessellatedVertex m[3] = TessellatedVertex[3](splits[triangle].midpoint[0], splits[triangle].midpoint[1], splits[triangle].midpoint[2]);

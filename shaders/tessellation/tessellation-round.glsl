@@ -46,6 +46,7 @@ uniform mat4 frameWorldToClip;
 uniform vec2 frameSize;
 
 const int kAngleMetricNever = 1;  // an angle error never exceeds 1: that threshold means no split
+const int kDrawable = 64;         // EdgeSplit::mask.y bit: the virtual-objects pass would draw it unsplit
 
 TessellatedVertex loadCorner(uint local, uint triangle, int k) {
   if (fromMesh == 0) return records[3u * triangle + uint(k)];

@@ -1,9 +1,8 @@
 #version 430 core
-// Virtual objects: each vertex placed at its virtual position from the search, but carrying its
-// original world position and normal, so it is lit where the real object is.
-
+// Virtual objects from a reflected object's own mesh: each vertex with its search result, for the
+// geometry shader to place its triangle.
 #include "common/reflected-vertex-buffer.glsl"
-#include "common/virtual-vertex-output.glsl"
+#include "common/tessellated-vertex.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -13,8 +12,11 @@ uniform mat4 objectToWorld;
 uniform mat3 normalToWorld;
 uniform uint firstSlot;
 
+out CornerData {
+  TessellatedVertex corner;
+} outCorner;
+
 void main() {
-  ReflectedVertex r = reflected[firstSlot + uint(gl_VertexID)];
-  emitVirtualVertex((objectToWorld * vec4(inPosition, 1.0)).xyz, normalToWorld * inNormal, inUv, r.virtualPosition.xyz,
-                    r.reflectionNormal.xyz, r.state.w);
+  outCorner.corner = makeTessellatedVertex((objectToWorld * vec4(inPosition, 1.0)).xyz, normalToWorld * inNormal, inUv,
+                                           reflected[firstSlot + uint(gl_VertexID)]);
 }

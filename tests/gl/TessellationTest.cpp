@@ -189,24 +189,26 @@ TEST(Tessellation, CheckerSphereMismatchFallsAsTheThresholdFalls) {
 
 // The round's decision is split into a classification of every triangle, a search of only the
 // edges it lists and a decision per triangle. On the scenes of these tests it splits exactly what
-// the single split kernel it replaced did (its statistics, measured at 640x480 on the second frame
-// at time 0 with the default settings, before the change).
+// the single split kernel it replaced did (rounds and searches measured at 640x480 on the second
+// frame at time 0 with the default settings, before the change). It finishes fewer: the single
+// kernel also emitted triangles no virtual triangle could be drawn from (a corner unreflected or
+// every corner hidden), 243, 1496 and 27034 then; those are now left out before emission.
 TEST(Tessellation, ClassifyingThenSearchingSplitsWhatTheSingleKernelDid) {
   struct Expected {
     const char* scene;
-    std::uint32_t inputTriangles, finishedTriangles, midpointSearches;
+    std::uint32_t inputTriangles, drawableFinishedTriangles, midpointSearches;
     std::vector<std::uint32_t> trianglesPerRound;
   };
-  for (const Expected& expected : {Expected{"quad", 2, 243, 414, {2, 8, 32, 106, 206}},
-                                   Expected{"checker-sphere", 512, 1496, 5139, {512, 520, 514, 340, 182}},
-                                   Expected{"teapot-table", 26500, 27034, 4159, {26500, 136, 149, 230, 277}}}) {
+  for (const Expected& expected : {Expected{"quad", 2, 233, 414, {2, 8, 32, 106, 206}},
+                                   Expected{"checker-sphere", 512, 1340, 5139, {512, 520, 514, 340, 182}},
+                                   Expected{"teapot-table", 26500, 26999, 4159, {26500, 136, 149, 230, 277}}}) {
     Rig rig = makeRig(expected.scene);
     ASSERT_TRUE(rig.renderer);
     renderFrame(rig, {}, 640, 480);
     const render::RenderedFrame frame = renderFrame(rig, {}, 640, 480);
     const passes::TessellationStatistics& statistics = frame.tessellation;
     EXPECT_EQ(statistics.inputTriangles, expected.inputTriangles) << expected.scene;
-    EXPECT_EQ(statistics.finishedTriangles, expected.finishedTriangles) << expected.scene;
+    EXPECT_EQ(statistics.finishedTriangles, expected.drawableFinishedTriangles) << expected.scene;
     EXPECT_EQ(statistics.midpointSearches.searched, expected.midpointSearches) << expected.scene;
     EXPECT_EQ(statistics.trianglesPerRound, expected.trianglesPerRound) << expected.scene;
   }

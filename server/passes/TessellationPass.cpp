@@ -59,7 +59,8 @@ void TessellationPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kStatisticsBinding, buffers.midpointStatistics());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, buffers.counters());
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  for (std::size_t part = 0; part < frame.plan.mirrors.size(); ++part) {
+    const MirrorSlots* mirror = frame.plan.mirrors[part];
     for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search}) {
       program->use();
       setSearchMirror(*program, frame, *mirror);
@@ -69,12 +70,16 @@ void TessellationPass::execute(const FrameContext& frame) {
     const math::Bounds& bounds = frame.worldBounds[mirror->mirrorObject];
     programs_.classify.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
     programs_.classify.set("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
-    tessellateMirror(frame, *mirror);
+    // Each part may take an even share of what is left of the finished list, so one part's
+    // full tessellation cannot leave the next none.
+    const std::size_t partsLeft = frame.plan.mirrors.size() - part;
+    tessellateMirror(frame, *mirror,
+                     buffers.finishedCount() + (TessellationBuffers::kMaxTriangles - buffers.finishedCount()) / partsLeft);
   }
   buffers.finishStatistics();
 }
 
-void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror) {
+void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror, std::size_t finishedBudget) {
   const gl::GlApi& gl = frame.gl;
   TessellationBuffers& buffers = frame.reflections.tessellation();
   TessellationStatistics& statistics = buffers.statistics();
@@ -92,13 +97,14 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   }
   if (runs.empty()) return;
   statistics.inputTriangles += static_cast<std::uint32_t>(total);
-  const auto drawFromMesh = [&](const ObjectRun& run) {
-    buffers.ranges().push_back({&mirror, run.range, 0, static_cast<GLsizei>(run.triangles), true});
-    statistics.finishedTriangles += static_cast<std::uint32_t>(run.triangles);
+  const auto drawFromMesh = [&](const ReflectionSlotRange* range) {
+    const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range->object].mesh].triangleCount();
+    buffers.ranges().push_back({&mirror, range, 0, static_cast<GLsizei>(triangles), true});
+    statistics.finishedTriangles += static_cast<std::uint32_t>(triangles);
   };
   if (!buffers.reserveSplits(total) || !buffers.reserveRequests(total, runs.size())) {
     statistics.capped = true;
-    for (const ObjectRun& run : runs) drawFromMesh(run);
+    for (const ObjectRun& run : runs) drawFromMesh(run.range);
     return;
   }
 
@@ -113,7 +119,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   std::vector<TessellationBuffers::RoundCounts> splittingCounts;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (counts[i].children == 0) {
-      drawFromMesh(runs[i]);
+      drawFromMesh(runs[i].range);
       continue;
     }
     splitting.push_back(runs[i]);
@@ -143,14 +149,27 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
       }
     }
     std::size_t children = 0, unsplit = 0;
-    for (const auto& count : counts) children += count.children;
-    if (!last && children > 0 && !buffers.reserveWorking(to, children)) last = true;  // past the cap: finish here
+    for (const auto& count : counts) {
+      children += count.children;
+      unsplit += count.unsplit;
+    }
+    // Past the cap or this part's share of the finished list: the working triangles finish here
+    // (they fit the share, since the last round's check counted them as children).
+    if (!last && children > 0 &&
+        (buffers.finishedCount() + unsplit + children > finishedBudget || !buffers.reserveWorking(to, children)))
+      last = true;
     if (last && round < settings.maxLevel) statistics.capped = true;
-    if (last)
+    if (last) {
       for (std::size_t i = 0; i < runs.size(); ++i) counts[i] = {0, static_cast<std::uint32_t>(runs[i].triangles)};
-    for (const auto& count : counts) unsplit += count.unsplit;
+      unsplit = total;
+    }
     if (!buffers.reserveFinished(unsplit)) {
+      // The finished list is full (a round-0 mesh larger than the share): these objects are drawn
+      // whole from their meshes, over what earlier rounds finished of them. Per-pixel exact hits
+      // make the overlap draw the same pixels twice, so only coverage is coarser, where dropping
+      // the round left holes.
       statistics.capped = true;
+      for (const ObjectRun& run : runs) drawFromMesh(run.range);
       return;
     }
 

@@ -33,7 +33,8 @@ CommandLine benchOptions() {
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
       "frame-to-frame coherence and from a cold start, reflection-point error in pixels against the exact\n"
       "sphere solver (scenes with an analytic sphere mirror), and the last frame against the ray-traced\n"
-      "reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time).\n"
+      "reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is the last pose\n"
+      "drawn with no reflection (--method none): the scene's own raster, below which no method can go.\n"
       "Prints a table and writes the same numbers as CSV and JSON.\n"
       "`specula bench tessellation --help` describes the tessellation sweep, `specula bench accuracy --help`\n"
       "the accuracy-against-time report.",

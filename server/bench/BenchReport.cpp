@@ -56,6 +56,7 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
       {"first_frame_ms", number(r.firstFrameMilliseconds, 1)},
       {"frame_ms_median", number(r.frameMedianMilliseconds, 2)},
       {"fps", number(r.framesPerSecond(), 1)},
+      {"raster_floor_ms", number(r.rasterFloorMilliseconds, 2)},
   };
   for (const std::string& stage : stages) f.push_back({stage + "_ms", optionalNumber(stageMilliseconds(r, stage), 3)});
   f.push_back({"steps_warm_mean", number(r.warmSteps.mean, 2)});
@@ -313,8 +314,8 @@ std::string formatJson(std::span<const SceneBenchResult> results) {
 std::string formatTable(std::span<const SceneBenchResult> results) {
   std::string table;
   char line[512];
-  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s | %-17s | %-26s | %-20s | %8s %8s\n", "scene", "frame ms", "fps",
-                "first", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms", "x trace");
+  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", "scene", "frame ms", "fps",
+                "first", "floor", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms", "x trace");
   table += line;
   for (const SceneBenchResult& r : results) {
     const auto& e = r.pointError;
@@ -323,9 +324,9 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
                               orDash(r.coldStepsLarge ? number(r.coldStepsLarge->mean, 1) : "");
     const std::string error = e ? significant(e->mean) + "/" + significant(e->p99) + "/" + significant(e->maximum) : "-";
     const std::string image = c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
-    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s | %-17s | %-26s | %-20s | %8s %8s\n", r.scene.c_str(),
+    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", r.scene.c_str(),
                   number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
-                  number(r.firstFrameMilliseconds, 0).c_str(), steps.c_str(), error.c_str(), image.c_str(),
+                  number(r.firstFrameMilliseconds, 0).c_str(), number(r.rasterFloorMilliseconds, 1).c_str(), steps.c_str(), error.c_str(), image.c_str(),
                   orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str(),
                   orDash(optionalNumber(r.timeVersusRayTrace(), 2)).c_str());
     table += line;

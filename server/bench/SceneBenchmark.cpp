@@ -62,6 +62,19 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
   return SceneBenchResult::ReferenceComparison{comparison->psnr, comparison->ssim, comparison->mirrorMismatch, truth->milliseconds};
 }
 
+// Median wall time of the pose drawn without reflections, after one frame to settle the targets.
+double rasterFloor(render::Renderer& renderer, const scene::ScenePose& pose, const BenchOptions& options) {
+  constexpr int kFloorFrames = 10;
+  passes::ReflectionSettings settings;
+  settings.method = passes::ReflectionMethod::None;
+  std::vector<double> totals;
+  for (int frame = 0; frame <= kFloorFrames; ++frame) {
+    auto rendered = renderer.render(pose, options.width, options.height, settings);
+    if (rendered && frame > 0) totals.push_back(rendered->timings.totalMilliseconds);
+  }
+  return totals.empty() ? 0.0 : median(std::move(totals));
+}
+
 }  // namespace
 
 Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene,
@@ -127,6 +140,8 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
                                                      pointErrors.searchHiddenButExactVisible,
                                                      pointErrors.exactHiddenButSearchVisible};
   }
+
+  result.rasterFloorMilliseconds = rasterFloor(r, pose, options);
 
   if (options.reference) {
     auto comparison = compareWithRayTracer(scene, pose, last);

@@ -37,6 +37,9 @@ struct SceneBenchResult {
   std::vector<render::StageTiming> stageMedians;  // per pass over the warm frames (0 where a pass did not run)
   double frameMedianMilliseconds = 0.0;   // whole frame, wall clock, median over the warm frames
   double framesPerSecond() const { return frameMedianMilliseconds > 0.0 ? 1000.0 / frameMedianMilliseconds : 0.0; }
+  // The last pose drawn with no reflection (`--method none`), median over a few frames: the scene's
+  // own raster, a floor that no reflection method on this GL can go below.
+  double rasterFloorMilliseconds = 0.0;
 
   StepStatistics warmSteps;     // along the animation with frame-to-frame coherence
   StepStatistics coldSteps;     // the first frame: every vertex from the pyramid

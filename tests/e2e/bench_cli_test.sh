@@ -15,7 +15,7 @@ check "the table lists the passes" grep -q "passes (median ms): scene .* search 
 check "the CSV has a header and two rows" test "$(wc -l <"$work/b.csv")" -eq 3
 columns=$(head -1 "$work/b.csv" | tr ',' '\n' | wc -l)
 check "every CSV row has the header's columns" awk -F, -v n="$columns" 'NF != n { exit 1 }' "$work/b.csv"
-for column in frame_ms_median search_ms steps_warm_mean steps_cold_large_max point_error_p99_px psnr_db ssim raytrace_ms frame_vs_raytrace; do
+for column in frame_ms_median raster_floor_ms search_ms steps_warm_mean steps_cold_large_max point_error_p99_px psnr_db ssim raytrace_ms frame_vs_raytrace; do
   check "the CSV has column $column" grep -q "\(^\|,\)$column\(,\|$\)" <(head -1 "$work/b.csv")
 done
 # Column values by name, so the checks do not depend on column order.
@@ -23,6 +23,7 @@ value() { awk -F, -v scene="$1" -v column="$2" 'NR == 1 { for (i = 1; i <= NF; i
 check "the sphere's point error is measured and below 3 px" awk -v e="$(value checker-sphere point_error_p99_px)" 'BEGIN { exit !(e != "" && e >= 0 && e < 3) }'
 check "the bowl has no analytic sphere, so no point error" test -z "$(value kitchen point_error_p99_px)"
 check "cold searches take more steps than warm ones" awk -v c="$(value checker-sphere steps_cold_mean)" -v w="$(value checker-sphere steps_warm_mean)" 'BEGIN { exit !(c > w && w > 0) }'
+check "the raster floor is measured and below the kitchen's reflected frame" awk -v f="$(value kitchen raster_floor_ms)" -v t="$(value kitchen frame_ms_median)" 'BEGIN { exit !(f > 0 && f < t) }'
 check "PSNR against the ray tracer is a real number" awk -v p="$(value checker-sphere psnr_db)" 'BEGIN { exit !(p > 10 && p < 100) }'
 check "the JSON names both scenes" bash -c "grep -q '\"scene\": \"checker-sphere\"' '$work/b.json' && grep -q '\"scene\": \"kitchen\"' '$work/b.json'"
 check "the JSON writes null where nothing was measured" grep -q '"point_error_p99_px": null' "$work/b.json"

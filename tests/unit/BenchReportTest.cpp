@@ -22,6 +22,7 @@ bench::SceneBenchResult measured(const std::string& name) {
   r.height = 480;
   r.frames = 2;
   r.frameMedianMilliseconds = 20.0;
+  r.rasterFloorMilliseconds = 7.25;
   r.stageMedians = {{"scene", 5.0}, {"search", 2.5}};
   r.warmSteps = {1.5, 4, 100};
   r.coldSteps = {16.0, 22, 100};
@@ -51,8 +52,8 @@ TEST(BenchReport, CsvHasOneColumnSetAndEmptyCellsWhereNothingWasMeasured) {
   EXPECT_EQ(commas(rows[1]), commas(rows[0]));
   EXPECT_EQ(commas(rows[2]), commas(rows[0]));
   EXPECT_NE(rows[0].find(",scene_ms,search_ms,"), std::string::npos);
-  EXPECT_NE(rows[0].find(",fps,"), std::string::npos);
-  EXPECT_NE(rows[1].find(",50.0,"), std::string::npos) << "fps = 1000 / 20 ms: " << rows[1];
+  EXPECT_NE(rows[0].find(",fps,raster_floor_ms,"), std::string::npos);
+  EXPECT_NE(rows[1].find(",50.0,7.25,"), std::string::npos) << "fps = 1000 / 20 ms, then the floor: " << rows[1];
   EXPECT_NE(rows[1].find(",0.5,1.25,"), std::string::npos) << rows[1];
   EXPECT_EQ(rows[2].substr(rows[2].size() - 5), ",,,,,") << "no reference: five empty cells at the end";
 }
@@ -66,6 +67,8 @@ TEST(BenchReport, FrameTimeIsAlsoGivenAsAMultipleOfTheRayTracers) {
   EXPECT_EQ(csv[1].substr(csv[1].size() - 6), ",0.455") << csv[1];
   const auto table = lines(bench::formatTable(results));
   EXPECT_NE(table[0].find("x trace"), std::string::npos) << table[0];
+  EXPECT_NE(table[0].find(" floor "), std::string::npos) << table[0];
+  EXPECT_NE(table[1].find(" 7.2 "), std::string::npos) << "the raster floor: " << table[1];
   EXPECT_NE(table[1].find(" 0.45"), std::string::npos) << table[1];
 }
 

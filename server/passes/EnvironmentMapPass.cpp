@@ -10,8 +10,6 @@ namespace specula::passes {
 
 namespace {
 
-constexpr std::array<std::string_view, 2> kReads{"color", "mirror-gbuffer"};
-constexpr std::array<std::string_view, 1> kWrites{"color"};
 
 // GL's cube faces in order (+x, -x, +y, -y, +z, -z): the direction each looks along and its up
 // vector, which bake in the cube map's left-handed face coordinates.
@@ -42,8 +40,6 @@ Result<std::unique_ptr<EnvironmentMapPass>> EnvironmentMapPass::create(const gl:
   return std::unique_ptr<EnvironmentMapPass>(new EnvironmentMapPass(gl, std::move(capture.value()), std::move(lookup.value())));
 }
 
-std::span<const std::string_view> EnvironmentMapPass::reads() const { return kReads; }
-std::span<const std::string_view> EnvironmentMapPass::writes() const { return kWrites; }
 
 void EnvironmentMapPass::prepare(const gl::GlApi& gl, int faceSize) {
   if (faceSize == faceSize_) return;

@@ -17,8 +17,6 @@ class EnvironmentMapPass final : public Pass {
   static Result<std::unique_ptr<EnvironmentMapPass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "environment-map"; }
-  std::span<const std::string_view> reads() const override;
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

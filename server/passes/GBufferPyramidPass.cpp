@@ -1,12 +1,9 @@
 #include "passes/GBufferPyramidPass.h"
 
-#include <array>
 
 namespace specula::passes {
 
 namespace {
-constexpr std::array<std::string_view, 1> kReads{"mirror-gbuffer"};
-constexpr std::array<std::string_view, 1> kWrites{"gbuffer-pyramid"};
 constexpr int kGroupSide = 8;  // local_size of gbuffer-pyramid.comp
 }  // namespace
 
@@ -18,8 +15,6 @@ Result<std::unique_ptr<GBufferPyramidPass>> GBufferPyramidPass::create(const gl:
   return std::unique_ptr<GBufferPyramidPass>(new GBufferPyramidPass(std::move(full.value()), std::move(half.value())));
 }
 
-std::span<const std::string_view> GBufferPyramidPass::reads() const { return kReads; }
-std::span<const std::string_view> GBufferPyramidPass::writes() const { return kWrites; }
 
 void GBufferPyramidPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

@@ -14,8 +14,6 @@ class GBufferPyramidPass final : public Pass {
   static Result<std::unique_ptr<GBufferPyramidPass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "gbuffer-pyramid"; }
-  std::span<const std::string_view> reads() const override;
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

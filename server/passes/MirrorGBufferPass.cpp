@@ -1,6 +1,5 @@
 #include "passes/MirrorGBufferPass.h"
 
-#include <array>
 #include <cmath>
 
 #include "math/Transform.h"
@@ -10,7 +9,6 @@ namespace specula::passes {
 
 namespace {
 
-constexpr std::array<std::string_view, 1> kWrites{"mirror-gbuffer"};
 constexpr int kRectPadding = 2;  // texels around the projected bounds: rasterization and the 3×3 windows
 
 // The G-buffer texels a world box can cover; everything when the box reaches behind the eye.
@@ -44,7 +42,6 @@ Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::G
   return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(quadric.value())));
 }
 
-std::span<const std::string_view> MirrorGBufferPass::writes() const { return kWrites; }
 
 void MirrorGBufferPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

@@ -16,8 +16,6 @@ class MirrorGBufferPass final : public Pass {
   static Result<std::unique_ptr<MirrorGBufferPass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "mirror-gbuffer"; }
-  std::span<const std::string_view> reads() const override { return {}; }
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

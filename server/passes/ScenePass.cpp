@@ -1,6 +1,5 @@
 #include "passes/ScenePass.h"
 
-#include <array>
 #include <vector>
 
 #include "math/Transform.h"
@@ -10,7 +9,6 @@
 namespace specula::passes {
 
 namespace {
-constexpr std::array<std::string_view, 2> kWrites{"color", "depth"};
 }
 
 Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
@@ -21,7 +19,6 @@ Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
   return std::unique_ptr<ScenePass>(new ScenePass(gl, std::move(program.value()), std::move(quadric.value())));
 }
 
-std::span<const std::string_view> ScenePass::writes() const { return kWrites; }
 
 void ScenePass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

@@ -16,8 +16,6 @@ class ScenePass final : public Pass {
   static Result<std::unique_ptr<ScenePass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "scene"; }
-  std::span<const std::string_view> reads() const override { return {}; }
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

@@ -1,7 +1,6 @@
 #include "passes/SearchPass.h"
 
 #include <algorithm>
-#include <array>
 
 #include "passes/QuadricUniforms.h"
 #include "passes/ReflectedVertex.h"
@@ -9,8 +8,6 @@
 namespace specula::passes {
 
 namespace {
-constexpr std::array<std::string_view, 2> kReads{"mirror-gbuffer", "gbuffer-pyramid"};
-constexpr std::array<std::string_view, 1> kWrites{"reflected-vertices"};
 constexpr GLuint kGroupSize = 64;  // local_size_x of search.comp
 // Texels a cold start scans along the mirror's longer side, at most, and the coarse texels it climbs
 // from: a closed convex mirror has one best point, other parts may have several local ones.
@@ -24,8 +21,6 @@ Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
   return std::unique_ptr<SearchPass>(new SearchPass(std::move(program.value())));
 }
 
-std::span<const std::string_view> SearchPass::reads() const { return kReads; }
-std::span<const std::string_view> SearchPass::writes() const { return kWrites; }
 
 void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

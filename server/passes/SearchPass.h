@@ -23,8 +23,6 @@ class SearchPass final : public Pass {
   static Result<std::unique_ptr<SearchPass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "search"; }
-  std::span<const std::string_view> reads() const override;
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

@@ -1,14 +1,11 @@
 #include "passes/TessellationPass.h"
 
-#include <array>
 
 #include "passes/SearchPass.h"
 
 namespace specula::passes {
 
 namespace {
-constexpr std::array<std::string_view, 2> kReads{"mirror-gbuffer", "reflected-vertices"};
-constexpr std::array<std::string_view, 1> kWrites{"tessellated-triangles"};
 constexpr GLuint kGroupSize = 64;  // local_size_x of the tessellation kernels
 // Storage-buffer bindings of shaders/tessellation.
 constexpr GLuint kMeshVerticesBinding = 0, kStatisticsBinding = 2, kWorkingBinding = 3, kSplitsBinding = 4,
@@ -34,8 +31,6 @@ Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlA
       new TessellationPass(Programs{std::move(*classify), std::move(*dispatch), std::move(*search), std::move(*decide), std::move(*emit)}));
 }
 
-std::span<const std::string_view> TessellationPass::reads() const { return kReads; }
-std::span<const std::string_view> TessellationPass::writes() const { return kWrites; }
 
 void TessellationPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

@@ -18,8 +18,6 @@ class TessellationPass final : public Pass {
   static Result<std::unique_ptr<TessellationPass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "tessellation"; }
-  std::span<const std::string_view> reads() const override;
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

@@ -1,6 +1,5 @@
 #include "passes/VirtualObjectsPass.h"
 
-#include <array>
 
 #include "math/Transform.h"
 #include "passes/ReflectionResources.h"
@@ -9,8 +8,6 @@
 namespace specula::passes {
 
 namespace {
-constexpr std::array<std::string_view, 3> kReads{"reflected-vertices", "tessellated-triangles", "color"};  // one of the first two
-constexpr std::array<std::string_view, 1> kWrites{"color"};
 // Virtual vertices lie a whole path (eye → mirror → object) away: push the far plane out.
 constexpr float kVirtualFarScale = 3.0f;
 }  // namespace
@@ -34,8 +31,6 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
                                                                     std::move(composite.value())));
 }
 
-std::span<const std::string_view> VirtualObjectsPass::reads() const { return kReads; }
-std::span<const std::string_view> VirtualObjectsPass::writes() const { return kWrites; }
 
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const {
   frame.setReflectedObject(objects_, range);

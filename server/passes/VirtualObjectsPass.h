@@ -16,8 +16,6 @@ class VirtualObjectsPass final : public Pass {
   static Result<std::unique_ptr<VirtualObjectsPass>> create(const gl::GlApi& gl);
 
   std::string_view name() const override { return "virtual-objects"; }
-  std::span<const std::string_view> reads() const override;
-  std::span<const std::string_view> writes() const override;
   void execute(const FrameContext& frame) override;
 
  private:

@@ -61,6 +61,8 @@ std::vector<OptionSpec> reflectionOptions() {
       {"gbuffer-scale", "X", scale, "1"},
       {"gbuffer-precision", "BITS", "G-buffer float bits: 32 (RGBA32F) or 16 (RGBA16F)", "32"},
       {"environment-size", "N", faceSize, std::to_string(defaults.environmentMapSize)},
+      {"plan", "SCOPE", "needed (leave out mirrors out of view and objects a mirror cannot show) | everything (planner off)",
+       "needed"},
   };
   for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
   return specs;
@@ -85,6 +87,10 @@ Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& opt
   auto cubeFace = options.integer("environment-size", passes::kMinEnvironmentMapSize, passes::kMaxEnvironmentMapSize);
   if (!cubeFace) return Error{cubeFace.error()};
   settings.environmentMapSize = *cubeFace;
+  const std::string plan = options.text("plan");
+  if (plan == "needed") settings.plan = passes::PlanScope::Needed;
+  else if (plan == "everything") settings.plan = passes::PlanScope::Everything;
+  else return Error{"--plan expects needed or everything, got '" + plan + "'"};
   auto tessellation = parseTessellationOptions(options);
   if (!tessellation) return Error{tessellation.error()};
   settings.tessellation = *tessellation;

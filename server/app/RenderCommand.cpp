@@ -40,7 +40,7 @@ CommandLine renderOptions() {
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
       "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] "
-      "[--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--plan needed|everything] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
@@ -84,8 +84,17 @@ std::string formatMilliseconds(double milliseconds) {
   return text;
 }
 
-// Per-stage timings and search statistics of a GL frame, as `render` prints them.
-std::string describeFrame(const render::RenderedFrame& frame) {
+const char* surfaceName(scene::SurfaceKind kind) {
+  switch (kind) {
+    case scene::SurfaceKind::Convex: return "convex";
+    case scene::SurfaceKind::Concave: return "concave";
+    case scene::SurfaceKind::Saddle: return "saddle";
+  }
+  return "?";
+}
+
+// Per-stage timings, the plan and search statistics of a GL frame, as `render` prints them.
+std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame& frame) {
   std::string text = "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ":";
   for (const render::StageTiming& stage : frame.timings.stages)
     text += " " + stage.name + " " + formatMilliseconds(stage.milliseconds) + " ms,";
@@ -99,6 +108,16 @@ std::string describeFrame(const render::RenderedFrame& frame) {
                   frame.drawnMirrors.size(), search.searched,
                   search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
                   search.coldStarts, search.hidden, search.unsolved);
+    text += line;
+  }
+  for (const render::MirrorPlanSummary& mirror : frame.plan) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "plan: mirror '%.64s' part %d (%s): %zu objects, %zu vertices searched; %zu objects, %zu vertices left out "
+                  "(%s)\n",
+                  scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.searchedObjects,
+                  mirror.searchedVertices, mirror.culledObjects, mirror.culledVertices,
+                  mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow");
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;
@@ -160,7 +179,7 @@ int runRender(std::span<const std::string> arguments) {
     auto frame = (*renderer)->render(pose, size->first, size->second, *settings);
     if (!frame) return fail(frame.error());
     rgba = std::move(frame->rgba);
-    timings = describeFrame(*frame);
+    timings = describeFrame(**scene, *frame);
   }
 
   const encode::ImageView view{rgba.data(), size->first, size->second};

@@ -56,7 +56,7 @@ void EnvironmentMapPass::prepare(const gl::GlApi& gl, int faceSize) {
   gl.BindTexture(GL_TEXTURE_2D, 0);
 }
 
-void EnvironmentMapPass::capture(const FrameContext& frame, const MirrorSlots& mirror, const glm::vec3& centre) const {
+void EnvironmentMapPass::capture(const FrameContext& frame, const PlannedMirror& mirror, const glm::vec3& centre) const {
   const gl::GlApi& gl = frame.gl;
   // Near enough for objects touching the mirror, far enough for everything in the scene.
   math::Bounds all;
@@ -84,10 +84,10 @@ void EnvironmentMapPass::capture(const FrameContext& frame, const MirrorSlots& m
                             cube_.id(), 0);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     capture_.set("worldToClip", projection * glm::lookAt(centre, centre + kCubeFaces[face].forward, kCubeFaces[face].up));
-    for (const ReflectionSlotRange& range : mirror.reflected) {
-      const scene::SceneObject& object = frame.scene.objects[range.object];
-      capture_.set("objectToWorld", frame.pose.objectToWorld[range.object]);
-      capture_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[range.object]));
+    for (const ReflectionSlotRange* range : mirror.reflected) {
+      const scene::SceneObject& object = frame.scene.objects[range->object];
+      capture_.set("objectToWorld", frame.pose.objectToWorld[range->object]);
+      capture_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[range->object]));
       setMaterial(capture_, frame.scene.materials[object.material]);
       frame.meshes.draw(object.mesh);
     }
@@ -100,9 +100,10 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
   prepare(gl, frame.settings.environmentMapSize);
   gl.Disable(GL_CULL_FACE);  // open meshes are seen from both sides
   gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // no seams where a lookup straddles two faces
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  for (const PlannedMirror& planned : frame.plan.mirrors) {
+    const MirrorSlots* mirror = planned.slots;
     // One cube per mirror, looked up from each of its parts' layers.
-    if (mirror->part == 0) capture(frame, *mirror, mirrorCentre(frame, mirror->mirrorObject));
+    if (mirror->part == 0) capture(frame, planned, mirrorCentre(frame, mirror->mirrorObject));
 
     frame.target.bind();
     gl.Enable(GL_FRAMEBUFFER_SRGB);

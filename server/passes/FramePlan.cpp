@@ -1,5 +1,7 @@
 #include "passes/FramePlan.h"
 
+#include "passes/MirrorReach.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,18 +34,34 @@ bool halfFloatsResolve(const math::Bounds& mirrorBounds) {
   return largest <= kReachInRadii * mirrorBounds.radius();
 }
 
-FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds>& worldBounds,
-                    const math::Camera& camera, float aspect, const ReflectionSettings& settings) {
+FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
+                    float aspect, const ReflectionSettings& settings) {
+  const math::Camera& camera = pose.camera;
   FramePlan plan;
   plan.passes.push_back("scene");
   if (settings.method == ReflectionMethod::None) return plan;
-  for (const MirrorSlots& mirror : slots.mirrors)
-    if (!mirror.reflected.empty() && boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f))
-      plan.mirrors.push_back(&mirror);
+  const bool everything = settings.plan == PlanScope::Everything;
+  for (const MirrorSlots& mirror : slots.mirrors) {
+    if (mirror.reflected.empty()) continue;
+    if (!everything && !boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f)) continue;
+    const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
+    // A part that faces away stays in the plan (the mirror's other parts share its stencil and
+    // composite) but searches nothing.
+    PlannedMirror planned{&mirror, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    for (const ReflectionSlotRange& range : mirror.reflected) {
+      if (everything || (!planned.facesAway && canAppearIn(mirror.reach, mirrorToWorld, worldBounds[range.object], camera.eye))) {
+        planned.reflected.push_back(&range);
+      } else {
+        ++planned.culledObjects;
+        planned.culledVertices += range.vertexCount;
+      }
+    }
+    plan.mirrors.push_back(std::move(planned));
+  }
   if (plan.mirrors.empty()) return plan;
   plan.gbufferPrecision = settings.gbufferPrecision;
-  for (const MirrorSlots* mirror : plan.mirrors)
-    if (!halfFloatsResolve(worldBounds[mirror->mirrorObject])) plan.gbufferPrecision = GBufferPrecision::Float32;
+  for (const PlannedMirror& mirror : plan.mirrors)
+    if (!halfFloatsResolve(worldBounds[mirror.slots->mirrorObject])) plan.gbufferPrecision = GBufferPrecision::Float32;
   if (settings.method == ReflectionMethod::EnvironmentMap) {
     plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "environment-map"});
     return plan;

@@ -8,12 +8,21 @@
 #include "math/Camera.h"
 #include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
+#include "scene/ScenePose.h"
 
 namespace specula::passes {
 
+// A mirror part whose reflection is drawn this frame, and the reflected objects that can appear in it.
+struct PlannedMirror {
+  const MirrorSlots* slots = nullptr;
+  std::vector<const ReflectionSlotRange*> reflected;
+  bool facesAway = false;  // the eye is behind every tangent plane of the part: nothing is searched
+  std::size_t culledObjects = 0, culledVertices = 0;  // left out: behind the part or in its shadow
+};
+
 struct FramePlan {
   std::vector<std::string_view> passes;         // pass names in execution order
-  std::vector<const MirrorSlots*> mirrors;      // visible mirrors whose reflections are drawn
+  std::vector<PlannedMirror> mirrors;           // visible mirror parts, a mirror's parts in a row
   bool tessellate = false;                      // virtual objects come from the tessellation pass
   // The settings' precision, unless RGBA16F cannot place a visible mirror's texels (far from the origin).
   GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;
@@ -23,9 +32,11 @@ struct FramePlan {
 // search: their spacing at the mirror's largest coordinate must stay under ~1/100 of its radius.
 bool halfFloatsResolve(const math::Bounds& mirrorBounds);
 
-// worldBounds: one box per scene object at this frame's pose. aspect = width / height.
-FramePlan planFrame(const ReflectionSlots& slots, const std::vector<math::Bounds>& worldBounds,
-                    const math::Camera& camera, float aspect, const ReflectionSettings& settings);
+// worldBounds: one box per scene object at this frame's pose. aspect = width / height. With
+// settings.plan Needed, a mirror out of the frustum is left out, and so is a reflected object that
+// cannot appear in a part (passes::canAppearIn); Everything keeps every mirror and object.
+FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
+                    float aspect, const ReflectionSettings& settings);
 
 // Whether a world-space box can be seen through the camera's frustum widened by `margin`.
 bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, float aspect, float margin);

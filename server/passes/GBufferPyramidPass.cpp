@@ -23,7 +23,8 @@ void GBufferPyramidPass::execute(const FrameContext& frame) {
   const GLenum format = resources.textureFormat();
   program.use();
   gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  for (const PlannedMirror& planned : frame.plan.mirrors) {
+    const MirrorSlots* mirror = planned.slots;
     const TexelRect changed = resources.changedRect(mirror->layer);
     if (changed.empty()) continue;
     program.set("layer", mirror->layer);

@@ -67,7 +67,8 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     program->set("eyePosition", frame.pose.camera.eye);
   }
 
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  for (const PlannedMirror& planned : frame.plan.mirrors) {
+    const MirrorSlots* mirror = planned.slots;
     gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.positionTexture(), 0, mirror->layer);
     gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, resources.normalTexture(), 0, mirror->layer);
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, resources.depthTexture(), 0);

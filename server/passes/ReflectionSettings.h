@@ -32,6 +32,12 @@ enum class TessellationMetric {
   Pixels,  // where the rasterizer puts the edge midpoint against where its true reflection projects
 };
 
+// What the frame plan leaves out (passes/FramePlan).
+enum class PlanScope {
+  Needed,      // mirrors out of view, and reflected objects a mirror part cannot show (behind it, in its shadow)
+  Everything,  // nothing: every mirror part searches every reflected object (the planner off, for comparison)
+};
+
 struct TessellationSettings {
   TessellationMode mode = TessellationMode::CrackFree;
   TessellationMetric metric = TessellationMetric::Pixels;
@@ -58,6 +64,7 @@ struct ReflectionSettings {
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb
+  PlanScope plan = PlanScope::Needed;
   TessellationSettings tessellation;
 };
 

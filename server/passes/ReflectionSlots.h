@@ -5,6 +5,7 @@
 #include <map>
 #include <vector>
 
+#include "passes/MirrorReach.h"
 #include "scene/MirrorParts.h"
 #include "scene/Scene.h"
 
@@ -13,6 +14,7 @@ namespace specula::passes {
 struct ReflectionSlotRange {
   std::size_t object = 0;       // index into Scene::objects
   std::uint32_t firstSlot = 0;  // first of the object's vertex count slots
+  std::uint32_t vertexCount = 0;
 };
 
 // One part of a mirror (scene::MirrorParts): its own G-buffer layer, search and reflection.
@@ -23,6 +25,7 @@ struct MirrorSlots {
   int part = 0, partCount = 1;   // which part of the mirror's search mesh
   scene::SurfaceKind kind = scene::SurfaceKind::Convex;
   bool seesItself = false;       // reflected rays may meet this mirror again: its own mesh is ray-cast
+  MirrorReach reach;             // where its reflected rays can go (object space): the plan culls with it
   std::vector<ReflectionSlotRange> reflected;
 };
 

@@ -38,7 +38,7 @@ void ScenePass::execute(const FrameContext& frame) {
   // Each mirror whose reflection is drawn this frame marks its visible pixels with its stencil value;
   // everything else writes 0, so objects in front of a mirror cut its stencil.
   std::vector<int> stencil(frame.scene.objects.size(), 0);
-  for (const MirrorSlots* mirror : frame.plan.mirrors) stencil[mirror->mirrorObject] = mirror->stencil;
+  for (const PlannedMirror& mirror : frame.plan.mirrors) stencil[mirror.slots->mirrorObject] = mirror.slots->stencil;
   gl.Enable(GL_STENCIL_TEST);
   gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 

@@ -88,14 +88,14 @@ void SearchPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resources.reflectedVertices());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, resources.statistics());
 
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
-    setSearchMirror(program_, frame, *mirror);
-    for (const ReflectionSlotRange& range : mirror->reflected) {
-      const scene::SceneObject& object = frame.scene.objects[range.object];
+  for (const PlannedMirror& mirror : frame.plan.mirrors) {
+    setSearchMirror(program_, frame, *mirror.slots);
+    for (const ReflectionSlotRange* range : mirror.reflected) {
+      const scene::SceneObject& object = frame.scene.objects[range->object];
       const auto vertexCount = static_cast<GLuint>(frame.scene.meshes[object.mesh].vertices.size());
       if (vertexCount == 0) continue;
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, frame.meshes.vertexBuffer(object.mesh));
-      frame.setReflectedObject(program_, range);
+      frame.setReflectedObject(program_, *range);
       program_.set("vertexCount", static_cast<unsigned>(vertexCount));
       gl.DispatchCompute((vertexCount + kGroupSize - 1) / kGroupSize, 1, 1);
     }

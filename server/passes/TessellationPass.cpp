@@ -55,7 +55,8 @@ void TessellationPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kStatisticsBinding, buffers.midpointStatistics());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, buffers.counters());
   for (std::size_t part = 0; part < frame.plan.mirrors.size(); ++part) {
-    const MirrorSlots* mirror = frame.plan.mirrors[part];
+    const PlannedMirror& planned = frame.plan.mirrors[part];
+    const MirrorSlots* mirror = planned.slots;
     for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search}) {
       program->use();
       setSearchMirror(*program, frame, *mirror);
@@ -68,13 +69,13 @@ void TessellationPass::execute(const FrameContext& frame) {
     // Each part may take an even share of what is left of the finished list, so one part's
     // full tessellation cannot leave the next none.
     const std::size_t partsLeft = frame.plan.mirrors.size() - part;
-    tessellateMirror(frame, *mirror,
+    tessellateMirror(frame, planned,
                      buffers.finishedCount() + (TessellationBuffers::kMaxTriangles - buffers.finishedCount()) / partsLeft);
   }
   buffers.finishStatistics();
 }
 
-void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror, std::size_t finishedBudget) {
+void TessellationPass::tessellateMirror(const FrameContext& frame, const PlannedMirror& mirror, std::size_t finishedBudget) {
   const gl::GlApi& gl = frame.gl;
   TessellationBuffers& buffers = frame.reflections.tessellation();
   TessellationStatistics& statistics = buffers.statistics();
@@ -84,17 +85,17 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
   // the working list, so a round costs one readback whatever the number of objects.
   std::vector<ObjectRun> runs;
   std::size_t total = 0;
-  for (const ReflectionSlotRange& range : mirror.reflected) {
-    const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range.object].mesh].triangleCount();
+  for (const ReflectionSlotRange* range : mirror.reflected) {
+    const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range->object].mesh].triangleCount();
     if (triangles == 0) continue;
-    runs.push_back({&range, total, triangles});
+    runs.push_back({range, total, triangles});
     total += triangles;
   }
   if (runs.empty()) return;
   statistics.inputTriangles += static_cast<std::uint32_t>(total);
   const auto drawFromMesh = [&](const ReflectionSlotRange* range) {
     const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range->object].mesh].triangleCount();
-    buffers.ranges().push_back({&mirror, range, 0, static_cast<GLsizei>(triangles), true});
+    buffers.ranges().push_back({mirror.slots, range, 0, static_cast<GLsizei>(triangles), true});
     statistics.finishedTriangles += static_cast<std::uint32_t>(triangles);
   };
   if (!buffers.reserveSplits(total) || !buffers.reserveRequests(total, runs.size())) {
@@ -186,7 +187,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const MirrorS
       programs_.emit.set("childrenBase", static_cast<unsigned>(nextTotal));
       gl.DispatchCompute(groupsFor(runs[i].triangles), 1, 1);
       if (counts[i].unsplit > 0) {
-        buffers.ranges().push_back({&mirror, runs[i].range, static_cast<GLint>(buffers.finishedCount()),
+        buffers.ranges().push_back({mirror.slots, runs[i].range, static_cast<GLint>(buffers.finishedCount()),
                                     static_cast<GLsizei>(counts[i].unsplit), false});
         buffers.addFinished(counts[i].unsplit);
       }

@@ -32,7 +32,7 @@ class TessellationPass final : public Pass {
   explicit TessellationPass(Programs programs) : programs_(std::move(programs)) {}
   // Tessellates every object the mirror reflects; finished triangles are appended to the frame's
   // list, which this part may fill up to `finishedBudget` triangles in all.
-  void tessellateMirror(const FrameContext& frame, const MirrorSlots& mirror, std::size_t finishedBudget);
+  void tessellateMirror(const FrameContext& frame, const PlannedMirror& mirror, std::size_t finishedBudget);
   // Decides which edges of every run's triangles split (classify, search, decide) and counts each
   // run's children and unsplit triangles into its pair of counters. `fromMesh`: round 0, whose
   // corners come from the objects' meshes and search slots.

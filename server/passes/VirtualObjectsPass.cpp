@@ -38,15 +38,15 @@ void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlo
   frame.meshes.draw(frame.scene.objects[range.object].mesh);
 }
 
-void VirtualObjectsPass::drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const {
+void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMirror& mirror) const {
   if (!frame.plan.tessellate) {
     objects_.use();
-    for (const ReflectionSlotRange& range : mirror.reflected) drawMesh(frame, range);
+    for (const ReflectionSlotRange* range : mirror.reflected) drawMesh(frame, *range);
     return;
   }
   const TessellationBuffers& tessellation = frame.reflections.tessellation();
   for (const TessellatedRange& range : tessellation.ranges()) {
-    if (range.mirror != &mirror || range.triangles == 0) continue;  // another mirror, or another part of this one
+    if (range.mirror != mirror.slots || range.triangles == 0) continue;  // another mirror, or another part of this one
     if (range.fromMesh) {
       objects_.use();
       drawMesh(frame, *range.object);
@@ -149,7 +149,8 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
 
   // Per mirror: its depth reset to the far plane, then each part's self-reflection and virtual
   // objects; every fragment is an exact hit at its exact depth, so the nearest wins in one pass.
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  for (const PlannedMirror& planned : frame.plan.mirrors) {
+    const MirrorSlots* mirror = planned.slots;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
     if (mirror->part == 0) resetMirrorDepth(frame);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -160,7 +161,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
     setForBoth("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
     if (mirror->seesItself) drawSelfReflection(frame, *mirror);
-    drawObjects(frame, *mirror);
+    drawObjects(frame, planned);
   }
 
   // Each mirror's reflection (or its reflected background) added over its surface in the frame.
@@ -175,7 +176,8 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.ActiveTexture(GL_TEXTURE0);
   composite_.set("reflection", 2);
   gl.BindVertexArray(emptyVertexArray_.id());
-  for (const MirrorSlots* mirror : frame.plan.mirrors) {
+  for (const PlannedMirror& planned : frame.plan.mirrors) {
+    const MirrorSlots* mirror = planned.slots;
     if (mirror->part != 0) continue;  // once per mirror
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);

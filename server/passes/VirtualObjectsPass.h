@@ -37,7 +37,7 @@ class VirtualObjectsPass final : public Pass {
   // Where the part's reflected rays meet the mirror itself: the mirror's colour at that depth.
   void drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror) const;
   // Draws the mirror's virtual objects with whichever program each needs.
-  void drawObjects(const FrameContext& frame, const MirrorSlots& mirror) const;
+  void drawObjects(const FrameContext& frame, const PlannedMirror& mirror) const;
   // One reflected object from its own mesh and search slots (objects_ in use).
   void drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const;
   template <typename Value>

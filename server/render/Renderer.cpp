@@ -112,7 +112,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
-  const passes::FramePlan plan = passes::planFrame(slots_, worldBounds, pose.camera, aspect, settings);
+  const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, aspect, settings);
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
@@ -137,9 +137,14 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     passes_.find(plan.passes[i])->second->execute(frame);
     mark(i + 1);
   }
-  RenderedFrame result{width, height, target_->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision};
-  for (const passes::MirrorSlots* mirror : plan.mirrors)
-    if (mirror->part == 0) result.drawnMirrors.push_back(mirror->mirrorObject);
+  RenderedFrame result{width, height, target_->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision, {}};
+  for (const passes::PlannedMirror& mirror : plan.mirrors) {
+    if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
+    MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part, mirror.slots->kind, mirror.facesAway, mirror.reflected.size(), 0,
+                              mirror.culledObjects, mirror.culledVertices};
+    for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
+    result.plan.push_back(summary);
+  }
   mark(marks - 1);
   if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
   if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();

@@ -24,6 +24,17 @@
 
 namespace specula::render {
 
+// One visible mirror part's share of the frame plan: the reflected objects searched, and those left
+// out because they cannot appear in it (behind every tangent plane, or in its shadow from the eye).
+struct MirrorPlanSummary {
+  std::size_t mirrorObject = 0;  // index into Scene::objects
+  int part = 0;
+  scene::SurfaceKind kind = scene::SurfaceKind::Convex;
+  bool facesAway = false;  // the eye sees only its back: nothing searched
+  std::size_t searchedObjects = 0, searchedVertices = 0;
+  std::size_t culledObjects = 0, culledVertices = 0;
+};
+
 struct RenderedFrame {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // sRGB, tightly packed, row 0 at the top
@@ -34,6 +45,7 @@ struct RenderedFrame {
   passes::TessellationStatistics tessellation;  // empty when the frame was not tessellated
   // What the G-buffer used: RGBA16F falls back to RGBA32F for mirrors far from the origin.
   passes::GBufferPrecision gbufferPrecision = passes::GBufferPrecision::Float32;
+  std::vector<MirrorPlanSummary> plan;  // per visible mirror part, a mirror's parts in a row
 };
 
 class Renderer {

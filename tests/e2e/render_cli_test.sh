@@ -39,13 +39,17 @@ fails_with "a non-numeric G-buffer scale is refused" "--gbuffer-scale expects te
 fails_with "a G-buffer precision other than 32 or 16 is refused" "--gbuffer-precision expects 32 or 16" render --gbuffer-precision 8
 fails_with "a cube face past the bound is refused" "--environment-size expects an integer in [8, 2048]" render --environment-size 4096
 fails_with "a margin past the bound is refused" "--margin expects a share in [0, 1]" render --margin 2
+fails_with "a bad plan scope names the choices" "--plan expects needed or everything, got 'some'" render --plan some
+output=$("$specula" render --scene checker-sphere --size 96x72 --out "$work/p.png" 2>&1)
+check "render prints the plan per mirror part" grep -q "plan: mirror 'mirror-sphere' part 0 (convex): 1 objects, 289 vertices searched; 0 objects" <<<"$output"
+check "--plan everything renders too" "$specula" render --scene checker-sphere --size 96x72 --plan everything --out "$work/pe.png"
 "$specula" render --method environment-map --environment-size 32 --gbuffer-scale 0.5 --gbuffer-precision 16 --size 96x72 --out "$work/env.png" >"$work/env.txt" 2>&1
 check "the environment-map method renders with the G-buffer options" test $? -eq 0
 check "... and runs the environment-map pass, not the search" bash -c "grep -q 'environment-map' '$work/env.txt' && ! grep -q ' search ' '$work/env.txt'"
 check "... and writes a PNG" bash -c "head -c 8 '$work/env.png' | od -An -tx1 | grep -q '89 50 4e 47'"
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"
-check "render --help lists every option" bash -c "for o in scene size eye target up fov time tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
+check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
 finish

@@ -36,7 +36,7 @@ TEST(FramePlan, VisibleMirrorRunsTheReflectionPassesForEveryOtherReflectedObject
   EXPECT_EQ(slots.mirrors[0].reflected.size(), 1u) << "the sphere reflects the floor, not itself";
   EXPECT_EQ(slots.slotCount, scene.meshes[scene.objects[slots.mirrors[0].reflected[0].object].mesh].vertices.size());
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, {});
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, {});
   EXPECT_EQ(plan.passes, kReflectionPasses);
   EXPECT_TRUE(plan.tessellate);
   ASSERT_EQ(plan.mirrors.size(), 1u);
@@ -50,7 +50,7 @@ TEST(FramePlan, TessellationOffOrAtLevelZeroRunsNoTessellationPass) {
     passes::ReflectionSettings settings;
     settings.tessellation.mode = mode;
     settings.tessellation.maxLevel = level;
-    const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings);
+    const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings);
     EXPECT_FALSE(plan.tessellate);
     EXPECT_EQ(std::count(plan.passes.begin(), plan.passes.end(), "tessellation"), 0);
     EXPECT_EQ(plan.passes.back(), "virtual-objects");
@@ -62,7 +62,7 @@ TEST(FramePlan, MirrorOutOfViewRunsOnlyTheScenePass) {
   const auto slots = passes::ReflectionSlots::forScene(scene);
   scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   pose.camera = {{0.0f, 2.0f, 5.0f}, {0.0f, 2.0f, 10.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};  // looking away
-  const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, {});
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, {});
   EXPECT_EQ(plan.passes, std::vector<std::string_view>{"scene"});
   EXPECT_TRUE(plan.mirrors.empty());
 }
@@ -72,8 +72,8 @@ TEST(FramePlan, MethodNoneRunsOnlyTheScenePass) {
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.method = passes::ReflectionMethod::None;
-  const passes::FramePlan plan = passes::planFrame(passes::ReflectionSlots::forScene(scene), worldBounds(scene, pose),
-                                                   pose.camera, 4.0f / 3.0f, settings);
+  const passes::FramePlan plan = passes::planFrame(passes::ReflectionSlots::forScene(scene), pose, worldBounds(scene, pose),
+                                                   4.0f / 3.0f, settings);
   EXPECT_EQ(plan.passes, std::vector<std::string_view>{"scene"});
 }
 
@@ -81,15 +81,15 @@ TEST(FramePlan, OnlyVisibleMirrorsOfSeveralAreSearched) {
   const scene::Scene scene = *scene::makeBuiltinScene("ants");
   const auto slots = passes::ReflectionSlots::forScene(scene);
   ASSERT_EQ(slots.mirrors.size(), 8u);
-  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   const auto bounds = worldBounds(scene, pose);
   // Aim a narrow camera at one eye: the other seven are outside the frustum.
   const glm::vec3 eye = bounds[slots.mirrors[0].mirrorObject].center();
-  const math::Camera camera{eye + glm::vec3(0.0f, 0.05f, 0.3f), eye, {0.0f, 1.0f, 0.0f}, 2.0f};
-  const passes::FramePlan plan = passes::planFrame(slots, bounds, camera, 1.0f, {});
+  pose.camera = {eye + glm::vec3(0.0f, 0.05f, 0.3f), eye, {0.0f, 1.0f, 0.0f}, 2.0f};
+  const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, 1.0f, {});
   ASSERT_FALSE(plan.mirrors.empty());
   EXPECT_LT(plan.mirrors.size(), 8u);
-  EXPECT_EQ(plan.mirrors[0]->mirrorObject, slots.mirrors[0].mirrorObject);
+  EXPECT_EQ(plan.mirrors[0].slots->mirrorObject, slots.mirrors[0].mirrorObject);
 }
 
 TEST(FramePlan, ObjectsMarkedNotReflectedGetNoSlots) {
@@ -101,7 +101,7 @@ TEST(FramePlan, ObjectsMarkedNotReflectedGetNoSlots) {
   EXPECT_TRUE(slots.mirrors[0].reflected.empty());
   EXPECT_EQ(slots.slotCount, 0u);
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  EXPECT_EQ(passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 1.0f, {}).passes,
+  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), 1.0f, {}).passes,
             std::vector<std::string_view>{"scene"});
 }
 
@@ -126,7 +126,7 @@ TEST(FramePlan, TheEnvironmentMapBaselineRunsNoSearchPyramidOrTessellation) {
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.method = passes::ReflectionMethod::EnvironmentMap;
-  const passes::FramePlan plan = passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings);
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings);
   EXPECT_EQ(plan.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "environment-map"}));
   EXPECT_FALSE(plan.tessellate);
   EXPECT_EQ(plan.mirrors.size(), 1u);
@@ -149,12 +149,12 @@ TEST(FramePlan, HalfFloatGBuffersAreKeptOnlyForMirrorsNearTheOrigin) {
   scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.gbufferPrecision = passes::GBufferPrecision::Float16;
-  EXPECT_EQ(passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings).gbufferPrecision,
+  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings).gbufferPrecision,
             passes::GBufferPrecision::Float16);
   const glm::vec3 far(5000.0f, 0.0f, 0.0f);  // the whole scene and camera moved away from the origin
   for (glm::mat4& objectToWorld : pose.objectToWorld) objectToWorld = glm::translate(glm::mat4(1.0f), far) * objectToWorld;
   pose.camera.eye += far;
   pose.camera.target += far;
-  EXPECT_EQ(passes::planFrame(slots, worldBounds(scene, pose), pose.camera, 4.0f / 3.0f, settings).gbufferPrecision,
+  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings).gbufferPrecision,
             passes::GBufferPrecision::Float32);
 }

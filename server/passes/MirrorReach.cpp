@@ -1,0 +1,141 @@
+#include "passes/MirrorReach.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "math/Transform.h"
+
+namespace specula::passes {
+
+namespace {
+
+// Whether a transform keeps angles (rotation, translation, one scale), so normal cones stay cones.
+bool keepsAngles(const glm::mat4& transform) {
+  const float x = glm::length(glm::vec3(transform[0])), y = glm::length(glm::vec3(transform[1])),
+              z = glm::length(glm::vec3(transform[2]));
+  const float tolerance = 1e-4f * std::max({x, y, z});
+  return std::abs(x - y) <= tolerance && std::abs(y - z) <= tolerance;
+}
+
+float smallestScale(const glm::mat4& transform) {
+  return std::min({glm::length(glm::vec3(transform[0])), glm::length(glm::vec3(transform[1])), glm::length(glm::vec3(transform[2]))});
+}
+
+// Whether the largest value of (P − S)·N over P in the object's sphere, S in the part's sphere and N
+// in the normal cone is at most 0: the object is behind every tangent plane of the part.
+bool behindEveryTangentPlane(const glm::vec3& partCentre, float partRadius, const glm::vec3& axis, float cosine,
+                             const glm::vec3& objectCentre, float objectRadius) {
+  const glm::vec3 offset = objectCentre - partCentre;
+  const float distance = glm::length(offset);
+  float largest = distance;  // N along the offset, if the cone holds that direction
+  if (distance > 0.0f) {
+    const float toAxis = std::acos(std::clamp(glm::dot(offset / distance, axis), -1.0f, 1.0f));
+    const float halfAngle = std::acos(std::clamp(cosine, -1.0f, 1.0f));
+    largest = distance * std::cos(std::max(0.0f, toAxis - halfAngle));
+  }
+  return largest + objectRadius + partRadius <= 0.0f;
+}
+
+// Whether every point of the object's sphere lies behind the ball as seen from the eye: inside the
+// ball's cone from the eye and farther than its centre (beyond where any line of the cone meets it).
+bool inShadowOf(const Ball& ball, const glm::vec3& eye, const glm::vec3& objectCentre, float objectRadius) {
+  const glm::vec3 toBall = ball.centre - eye;
+  const float ballDistance = glm::length(toBall);
+  if (ballDistance <= ball.radius) return false;  // the eye is inside the ball
+  const glm::vec3 toObject = objectCentre - eye;
+  const float objectDistance = glm::length(toObject);
+  if (objectDistance - objectRadius < ballDistance) return false;
+  const float coneHalfAngle = std::asin(ball.radius / ballDistance);
+  const float offAxis = std::acos(std::clamp(glm::dot(toObject / objectDistance, toBall / ballDistance), -1.0f, 1.0f));
+  const float objectHalfAngle = std::asin(std::min(1.0f, objectRadius / objectDistance));
+  return offAxis + objectHalfAngle < coneHalfAngle;
+}
+
+// Whether the sphere lies behind every tangent plane of the part placed by `mirrorToWorld`.
+bool behindThePart(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const glm::vec3& centre, float radius) {
+  if (reach.normalCosine <= 0.0f || !keepsAngles(mirrorToWorld)) return false;
+  const math::Bounds part = reach.bounds.transformed(mirrorToWorld);
+  const glm::vec3 axis = glm::normalize(math::normalMatrix(mirrorToWorld) * reach.normalAxis);
+  return behindEveryTangentPlane(part.center(), part.radius(), axis, reach.normalCosine, centre, radius);
+}
+
+}  // namespace
+
+MirrorReach MirrorReach::ofMeshPart(const scene::Mesh& mesh, const scene::MirrorParts& parts, std::size_t part, bool closedConvex) {
+  MirrorReach reach;
+  glm::vec3 normalSum(0.0f);
+  const auto inPart = [&](std::size_t triangle) { return parts.triangleParts.empty() || parts.triangleParts[triangle] == part; };
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    if (!inPart(t)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const scene::Vertex& v = mesh.vertices[mesh.indices[3 * t + k]];
+      reach.bounds.add(v.position);
+      normalSum += v.normal;
+    }
+  }
+  if (glm::length(normalSum) > 1e-6f) {
+    reach.normalAxis = glm::normalize(normalSum);
+    reach.normalCosine = 1.0f;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+      if (inPart(t))
+        for (int k = 0; k < 3; ++k)
+          reach.normalCosine = std::min(reach.normalCosine, glm::dot(mesh.vertices[mesh.indices[3 * t + k]].normal, reach.normalAxis));
+  }
+  if (closedConvex && !reach.bounds.empty()) {
+    // The surface's area-weighted centroid (inside a convex body; duplicated seam vertices do not
+    // pull it), and its distance to the nearest face plane (faces oriented outward by their vertex
+    // normals); no ball when it is not inside every face.
+    glm::dvec3 weighted(0.0);
+    double area = 0.0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+      const glm::dvec3 a(mesh.vertices[mesh.indices[3 * t]].position), b(mesh.vertices[mesh.indices[3 * t + 1]].position),
+          c(mesh.vertices[mesh.indices[3 * t + 2]].position);
+      const double triangleArea = 0.5 * glm::length(glm::cross(b - a, c - a));
+      weighted += triangleArea * (a + b + c) / 3.0;
+      area += triangleArea;
+    }
+    const glm::vec3 centre(area > 0.0 ? weighted / area : glm::dvec3(reach.bounds.center()));
+    float radius = std::numeric_limits<float>::max();
+    for (std::size_t t = 0; t < mesh.triangleCount() && radius > 0.0f; ++t) {
+      const scene::Vertex& a = mesh.vertices[mesh.indices[3 * t]];
+      const scene::Vertex& b = mesh.vertices[mesh.indices[3 * t + 1]];
+      const scene::Vertex& c = mesh.vertices[mesh.indices[3 * t + 2]];
+      glm::vec3 normal = glm::cross(b.position - a.position, c.position - a.position);
+      const float length = glm::length(normal);
+      if (length <= 0.0f) continue;  // a degenerate face bounds nothing
+      normal /= length;
+      if (glm::dot(normal, a.normal + b.normal + c.normal) < 0.0f) normal = -normal;
+      radius = std::min(radius, glm::dot(a.position - centre, normal));
+    }
+    if (radius > 0.0f && radius < std::numeric_limits<float>::max()) reach.inscribed = Ball{centre, radius};
+  }
+  return reach;
+}
+
+MirrorReach MirrorReach::ofQuadric(const scene::AnalyticShape& shape) {
+  MirrorReach reach;
+  reach.bounds.add(shape.center - shape.radii);
+  reach.bounds.add(shape.center + shape.radii);
+  reach.inscribed = Ball{shape.center, std::min({shape.radii.x, shape.radii.y, shape.radii.z})};
+  return reach;
+}
+
+bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object, const glm::vec3& eye) {
+  if (object.empty() || reach.bounds.empty()) return true;
+  const glm::vec3 objectCentre = object.center();
+  const float objectRadius = object.radius();
+  if (behindThePart(reach, mirrorToWorld, objectCentre, objectRadius)) return false;
+  if (reach.inscribed) {
+    const Ball ball{glm::vec3(mirrorToWorld * glm::vec4(reach.inscribed->centre, 1.0f)),
+                    reach.inscribed->radius * smallestScale(mirrorToWorld)};
+    if (inShadowOf(ball, eye, objectCentre, objectRadius)) return false;
+  }
+  return true;
+}
+
+bool facesEye(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const glm::vec3& eye) {
+  return reach.bounds.empty() || !behindThePart(reach, mirrorToWorld, eye, 0.0f);
+}
+
+}  // namespace specula::passes

@@ -1,0 +1,157 @@
+// The frame plan leaves out what a mirror cannot show (passes/FramePlan, passes/MirrorReach): an
+// object in a closed convex mirror's shadow, objects behind a flat part, every object of a part that
+// faces away. Left out means fewer searches and the same picture as `--plan everything`.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include "gl/GlContext.h"
+#include "reference/ImageMetrics.h"
+#include "reference/RayTracer.h"
+#include "render/Renderer.h"
+#include "scene/SceneLoader.h"
+#include "scene/ScenePose.h"
+
+using namespace specula;
+
+namespace {
+
+constexpr int kWidth = 480, kHeight = 360;
+
+std::shared_ptr<const scene::Scene> parse(const std::string& json) {
+  auto scene = scene::parseScene(json, ".", "test scene");
+  EXPECT_TRUE(scene) << scene.error();
+  return scene ? std::make_shared<const scene::Scene>(std::move(*scene)) : nullptr;
+}
+
+struct PlannedAndEverything {
+  render::RenderedFrame needed, everything;
+  std::size_t differingPixels = 0;  // pixels where the two frames differ by more than 2 levels
+};
+
+// The same pose rendered with the planner and without, each from cold seeds.
+PlannedAndEverything renderBoth(const std::shared_ptr<const scene::Scene>& scene) {
+  PlannedAndEverything result;
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  EXPECT_TRUE(context) << context.error();
+  if (!context) return result;
+  auto renderer = render::Renderer::create(**context, scene);
+  EXPECT_TRUE(renderer) << renderer.error();
+  if (!renderer) return result;
+  const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+  for (auto [scope, frame] : {std::pair{passes::PlanScope::Needed, &result.needed}, {passes::PlanScope::Everything, &result.everything}}) {
+    passes::ReflectionSettings settings;
+    settings.plan = scope;
+    (*renderer)->resetCoherence();
+    auto rendered = (*renderer)->render(pose, kWidth, kHeight, settings);
+    EXPECT_TRUE(rendered) << rendered.error();
+    if (!rendered) return result;
+    *frame = std::move(*rendered);
+  }
+  for (std::size_t i = 0; i < result.needed.rgba.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c)
+      if (std::abs(result.needed.rgba[i + c] - result.everything.rgba[i + c]) > 2) {
+        ++result.differingPixels;
+        break;
+      }
+  return result;
+}
+
+std::size_t culledVertices(const render::RenderedFrame& frame) {
+  std::size_t culled = 0;
+  for (const render::MirrorPlanSummary& mirror : frame.plan) culled += mirror.culledVertices;
+  return culled;
+}
+
+// checker-sphere with a red ball of 2 145 vertices hidden behind the mirror from the camera and a
+// second one beside it, reflected; `mirror` is the mirror's JSON (analytic sphere or mesh).
+std::string sphereWithAHiddenBall(const std::string& mirror) {
+  return R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#000000",
+    "camera": {"eye": [1, 3, 3.5], "target": [0, -0.3, 0], "fov": 40},
+    "meshes": [{"name": "mirror-sphere", "primitive": {"type": "sphere", "radius": 1, "slices": 128, "stacks": 64}},
+      {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
+      {"name": "ball", "primitive": {"type": "sphere", "radius": 0.2, "slices": 64, "stacks": 32}}],
+    "materials": [{"name": "mirror", "color": "#000000", "reflectivity": 1},
+      {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
+      {"name": "red", "color": "#d02020"}],
+    "objects": [{"name": "mirror-sphere", "mesh": "mirror-sphere", "material": "mirror", "reflected": false,
+                 "mirror": )" + mirror + R"(},
+      {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]},
+      {"name": "hidden-ball", "mesh": "ball", "material": "red", "translation": [-0.255, -0.766, -0.894]},
+      {"name": "visible-ball", "mesh": "ball", "material": "red", "translation": [1.3, -0.6, 0.8]}],
+    "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})";
+}
+
+void expectTheHiddenBallLeftOutAndTheSamePicture(const std::shared_ptr<const scene::Scene>& scene) {
+  ASSERT_TRUE(scene);
+  const PlannedAndEverything frames = renderBoth(scene);
+  ASSERT_EQ(frames.needed.plan.size(), 1u);
+  const render::MirrorPlanSummary& planned = frames.needed.plan[0];
+  EXPECT_EQ(planned.culledObjects, 1u) << "the ball behind the mirror";
+  EXPECT_EQ(planned.culledVertices, 65u * 33u);
+  EXPECT_EQ(planned.searchedObjects, 2u) << "the floor and the visible ball";
+  EXPECT_EQ(culledVertices(frames.everything), 0u);
+  EXPECT_EQ(frames.needed.search.searched + planned.culledVertices, frames.everything.search.searched);
+  // Without the planner every one of the ball's vertices is searched and found hidden: it never
+  // showed, so leaving it out changes nothing.
+  EXPECT_GE(frames.everything.search.hidden, frames.needed.search.hidden + planned.culledVertices);
+  EXPECT_LE(frames.differingPixels, 2u);
+}
+
+}  // namespace
+
+TEST(Planner, AnObjectInAnAnalyticSpheresShadowIsLeftOutAndThePictureStays) {
+  expectTheHiddenBallLeftOutAndTheSamePicture(
+      parse(sphereWithAHiddenBall(R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})")));
+}
+
+TEST(Planner, AnObjectInAMeshSpheresShadowIsLeftOutAndThePictureStays) {
+  expectTheHiddenBallLeftOutAndTheSamePicture(parse(sphereWithAHiddenBall(R"({"curvature": "convex"})")));
+}
+
+// A mirror cube split into its six flat faces: the three the camera cannot see search nothing, the
+// others leave out the ball behind their plane, and the picture matches the ray tracer's.
+TEST(Planner, FlatPartsLeaveOutWhatIsBehindThemAndPartsFacingAwaySearchNothing) {
+  const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
+    "camera": {"eye": [2.5, 2.0, 3.0], "target": [0, 0, 0], "fov": 45},
+    "meshes": [{"name": "cube", "primitive": {"type": "box", "size": [1.6, 1.6, 1.6]}},
+      {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
+      {"name": "ball", "primitive": {"type": "sphere", "radius": 0.3, "slices": 48, "stacks": 24}}],
+    "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9},
+      {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
+      {"name": "red", "color": "#d02020"}, {"name": "green", "color": "#20b040"}],
+    "objects": [{"name": "cube", "mesh": "cube", "material": "chrome", "reflected": false, "mirror": {"curvature": "mixed"}},
+      {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -0.801, 0]},
+      {"name": "front-ball", "mesh": "ball", "material": "red", "translation": [2.0, 0.2, 0.3]},
+      {"name": "back-ball", "mesh": "ball", "material": "green", "translation": [-1.6, 0.3, -1.4]}],
+    "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
+  ASSERT_TRUE(scene);
+  const PlannedAndEverything frames = renderBoth(scene);
+  ASSERT_EQ(frames.needed.plan.size(), 6u) << "one part per face";
+  int facingAway = 0, leavingOutTheBackBall = 0;
+  for (const render::MirrorPlanSummary& part : frames.needed.plan) {
+    if (part.facesAway) {
+      ++facingAway;
+      EXPECT_EQ(part.searchedObjects, 0u);
+      EXPECT_EQ(part.culledObjects, 3u);
+    } else if (part.culledObjects == 1) {
+      ++leavingOutTheBackBall;
+    }
+  }
+  EXPECT_EQ(facingAway, 3) << "the bottom and the two faces turned from the camera";
+  EXPECT_GE(leavingOutTheBackBall, 2);
+  EXPECT_LT(2 * frames.needed.search.searched, frames.everything.search.searched);
+  EXPECT_LE(frames.differingPixels, 2u);
+
+  auto tracer = reference::RayTracer::create(scene);
+  ASSERT_TRUE(tracer) << tracer.error();
+  auto reference = (*tracer)->render(scene::ScenePose::at(*scene, 0.0), {kWidth, kHeight});
+  ASSERT_TRUE(reference) << reference.error();
+  auto mismatch = reference::maskedMismatch({frames.needed.rgba, kWidth, kHeight}, {reference->rgba, kWidth, kHeight},
+                                            reference->mirrorMask);
+  ASSERT_TRUE(mismatch) << mismatch.error();
+  EXPECT_GT(mismatch->inside, 10000u);
+  EXPECT_LE(mismatch->share(), 0.01) << "the planned frame against the ray tracer";
+}

@@ -220,17 +220,18 @@
     const threshold = Number($('threshold').value);
     if (!(threshold > 0)) { showStatus('threshold must be a positive number'); return; }
     send({ settings: {
-      method: $('method').value, tessellation: $('tessellation').value, metric: $('metric').value,
+      method: $('method').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
       threshold, level: level === 0 ? -1 : level,
       jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value), ...nextInput(),
     } });
   }
-  for (const id of ['method', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
+  for (const id of ['method', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
     $(id).addEventListener('change', sendSettings);
 
   function showSettings(settings) {
     const set = (id, value) => { if (value !== undefined && value !== null) $(id).value = value; };
     set('method', settings.method);
+    set('plan', settings.plan);
     set('tessellation', settings.tessellation);
     set('metric', settings.metric);
     set('threshold', settings.threshold);
@@ -340,6 +341,8 @@
     const stages = (f.stages || []).map((s) => `${s.name} ${ms(s.ms)}`).join(' · ');
     const search = f.search || {};
     const tessellation = f.tessellation || {};
+    const plan = f.plan || [];
+    const sum = (field) => plan.reduce((total, part) => total + Number(part[field] || 0), 0);
     const lines = [
       `${f.width}×${f.height} ${f.still ? 'still' : 'interactive'} · frame ${f.number} · ${state.frameTimes.length} fps`,
       `input → frame ${state.latencyMs === null ? '–' : `${state.latencyMs.toFixed(0)} ms`}`,
@@ -349,6 +352,7 @@
       tessellation.inputTriangles
         ? `tessellation: ${tessellation.inputTriangles} → ${tessellation.finishedTriangles} triangles · ${tessellation.midpointSearches} midpoint searches${tessellation.capped ? ' · CAPPED' : ''}`
         : 'tessellation: off or nothing to split',
+      `plan: ${plan.length} mirror parts (${plan.filter((part) => part.facesAway).length} facing away) · searched ${sum('searchedObjects')} objects, ${sum('searchedVertices')} vertices · left out ${sum('culledObjects')} objects, ${sum('culledVertices')} vertices`,
       `${(f.jpegBytes / 1024).toFixed(1)} KB · ${f.skippedFrames || 0} skipped · scene ${(f.sceneTimeMs / 1000).toFixed(2)} s`,
     ];
     overlay.textContent = lines.join('\n');

@@ -28,6 +28,7 @@ struct RenderOutput {
   double renderMs = 0.0;                                 // wall clock
   v1::SearchStatistics search;
   v1::TessellationStatistics tessellation;
+  std::vector<v1::MirrorPlan> plan;
 };
 
 class FrameRenderer {

@@ -52,6 +52,16 @@ Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
   out.tessellation.set_finished_triangles(tessellation.finishedTriangles);
   out.tessellation.set_midpoint_searches(tessellation.midpointSearches.searched);
   out.tessellation.set_capped(tessellation.capped);
+  for (const render::MirrorPlanSummary& mirror : frame->plan) {
+    v1::MirrorPlan& plan = out.plan.emplace_back();
+    plan.set_mirror(renderer_->scene().objects[mirror.mirrorObject].name);
+    plan.set_part(static_cast<std::uint32_t>(mirror.part));
+    plan.set_faces_away(mirror.facesAway);
+    plan.set_searched_objects(static_cast<std::uint32_t>(mirror.searchedObjects));
+    plan.set_searched_vertices(static_cast<std::uint32_t>(mirror.searchedVertices));
+    plan.set_culled_objects(static_cast<std::uint32_t>(mirror.culledObjects));
+    plan.set_culled_vertices(static_cast<std::uint32_t>(mirror.culledVertices));
+  }
   return out;
 }
 

@@ -45,6 +45,7 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   out.set_resolution_scale(settings.resolutionScale);
   out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
   out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
+  out.set_plan(settings.reflection.plan == passes::PlanScope::Everything ? v1::PLAN_EVERYTHING : v1::PLAN_NEEDED);
   return out;
 }
 
@@ -309,6 +310,12 @@ Status Session::applySettings(const v1::RenderSettings& update) {
     case v1::TESSELLATION_UNSPECIFIED: break;
     default: return Error{"settings: unknown tessellation mode"};
   }
+  switch (update.plan()) {
+    case v1::PLAN_NEEDED: settings.reflection.plan = passes::PlanScope::Needed; break;
+    case v1::PLAN_EVERYTHING: settings.reflection.plan = passes::PlanScope::Everything; break;
+    case v1::PLAN_UNSPECIFIED: break;
+    default: return Error{"settings: unknown plan scope"};
+  }
   switch (update.metric()) {
     case v1::METRIC_PIXELS: t.metric = passes::TessellationMetric::Pixels; break;
     case v1::METRIC_ANGLE: t.metric = passes::TessellationMetric::Angle; break;
@@ -415,6 +422,7 @@ void Session::deliver(const FrameRequest& request, const RenderOutput& output, s
   frame.set_server_ms(serverMs);
   *frame.mutable_search() = output.search;
   *frame.mutable_tessellation() = output.tessellation;
+  for (const v1::MirrorPlan& mirror : output.plan) *frame.add_plan() = mirror;
   frame.set_jpeg(std::move(jpeg));
   const math::Camera& camera = request.job.pose.camera;
   *frame.mutable_camera() = protocol::cameraUpdate(camera.eye, camera.target, camera.up, camera.fovYDegrees);

@@ -137,6 +137,9 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
     EXPECT_EQ(frame->height(), 120u);
     EXPECT_GT(greyDeviation(*frame), 5.0) << "a rendered scene, not a blank frame";
     EXPECT_GT(frame->stages_size(), 2) << "per-pass GPU timings";
+    ASSERT_EQ(frame->plan_size(), 1) << "the quad's sphere, one part";
+    EXPECT_EQ(frame->plan(0).searched_objects(), 1u) << "the plan per mirror part travels with the frame";
+    EXPECT_EQ(frame->plan(0).searched_vertices(), frame->search().searched());
     clients.push_back(std::move(*client));
   }
 

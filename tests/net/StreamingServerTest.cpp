@@ -47,6 +47,7 @@ TEST_P(StreamingServer, HandshakeWelcomesAndSendsAFirstStillFrame) {
   EXPECT_TRUE(welcome.scene().animated());
   EXPECT_TRUE(welcome.playing()) << "an animated scene starts playing";
   EXPECT_EQ(welcome.settings().tessellation(), v1::TESSELLATION_CRACK_FREE);
+  EXPECT_EQ(welcome.settings().plan(), v1::PLAN_NEEDED);
   auto frame = receiveUntil(*client, isFrame);
   ASSERT_TRUE(frame);
   EXPECT_EQ(frame->frame().width(), 80u);
@@ -136,6 +137,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_tessellation(v1::TESSELLATION_PAPER);
     settings.mutable_settings()->set_level(2);
     settings.mutable_settings()->set_jpeg_quality(70);
+    settings.mutable_settings()->set_plan(v1::PLAN_EVERYTHING);
     ASSERT_TRUE(client->send(settings).ok());
     ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
     client->close();
@@ -151,6 +153,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().tessellation(), v1::TESSELLATION_PAPER);
   EXPECT_EQ(welcome.settings().level(), 2);
   EXPECT_EQ(welcome.settings().jpeg_quality(), 70u);
+  EXPECT_EQ(welcome.settings().plan(), v1::PLAN_EVERYTHING);
   EXPECT_NE(welcome.resume_token(), token) << "a token resumes once";
 
   auto third = rig.connect(GetParam());

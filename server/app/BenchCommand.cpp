@@ -12,6 +12,7 @@
 #include "app/GlSetup.h"
 #include "app/OutputFiles.h"
 #include "app/Plotting.h"
+#include "app/ReflectionOptions.h"
 #include "app/SceneSource.h"
 #include "bench/AccuracyBenchmark.h"
 #include "bench/BenchReport.h"
@@ -26,28 +27,31 @@ constexpr int kMaxBenchSide = 4096;
 constexpr int kMaxFrames = 10000;
 
 CommandLine benchOptions() {
+  std::vector<OptionSpec> specs = {
+      {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "all built-in scenes"},
+      {"size", "WxH", "frame size in pixels", "640x480"},
+      {"frames", "N", "warm frames measured after the cold one", "60"},
+      {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
+      {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
+      {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
+      {"json", "FILE", "JSON output", "bench.json"},
+      glOption(),
+  };
+  for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
       "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
-      "[--csv FILE] [--json FILE] [--gl BACKEND]",
+      "[--plan needed|everything] [--ray-cast-pixels N] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
       "frame-to-frame coherence and from a cold start, reflection-point error in pixels against the exact\n"
-      "sphere solver (scenes with an analytic sphere mirror), and the last frame against the ray-traced\n"
-      "reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is the last pose\n"
-      "drawn with no reflection (--method none): the scene's own raster, below which no method can go.\n"
+      "sphere solver (scenes with an analytic sphere mirror, where it searches), and the last frame against\n"
+      "the ray-traced reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is\n"
+      "the last pose drawn with no reflection (--method none): the scene's own raster, below which no method\n"
+      "can go. --plan everything turns the frame planner off (no culling, no ray-cast mirrors) for comparison.\n"
       "Prints a table and writes the same numbers as CSV and JSON.\n"
       "`specula bench tessellation --help` describes the tessellation sweep, `specula bench accuracy --help`\n"
       "the accuracy-against-time report.",
-      {
-          {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "all built-in scenes"},
-          {"size", "WxH", "frame size in pixels", "640x480"},
-          {"frames", "N", "warm frames measured after the cold one", "60"},
-          {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
-          {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
-          {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
-          {"json", "FILE", "JSON output", "bench.json"},
-          glOption(),
-      });
+      std::move(specs));
 }
 
 int fail(const std::string& message) {
@@ -267,6 +271,7 @@ int runBench(std::span<const std::string> arguments) {
     std::tie(settings.coldWidth, settings.coldHeight) = *coldSize;
   }
   settings.reference = !options.has("no-reference");
+  if (Status status = parsePlanOptions(options, settings.reflection); !status) return fail(status.error());
   std::vector<std::string> builtins;
   for (std::string_view name : scene::builtinSceneNames()) builtins.emplace_back(name);
   const std::vector<std::string> names = sceneList(options, builtins);

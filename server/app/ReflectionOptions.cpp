@@ -49,6 +49,29 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
   return settings;
 }
 
+std::vector<OptionSpec> planOptions() {
+  const passes::ReflectionSettings defaults;
+  return {
+      {"plan", "SCOPE",
+       "needed (leave out mirrors out of view and objects a mirror cannot show; ray-cast small mirrors) | everything "
+       "(planner off)",
+       "needed"},
+      {"ray-cast-pixels", "N", "a mirror covering at most N pixels (projected bounds) ray-casts its pixels instead of searching; 0 = never",
+       std::to_string(defaults.rayCastPixels)},
+  };
+}
+
+Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& settings) {
+  const std::string plan = options.text("plan");
+  if (plan == "needed") settings.plan = passes::PlanScope::Needed;
+  else if (plan == "everything") settings.plan = passes::PlanScope::Everything;
+  else return Error{"--plan expects needed or everything, got '" + plan + "'"};
+  auto rayCastPixels = options.integer("ray-cast-pixels", 0, passes::kMaxRayCastPixels);
+  if (!rayCastPixels) return Error{rayCastPixels.error()};
+  settings.rayCastPixels = *rayCastPixels;
+  return {};
+}
+
 std::vector<OptionSpec> reflectionOptions() {
   const passes::ReflectionSettings defaults;
   char scale[96], faceSize[96];
@@ -61,9 +84,8 @@ std::vector<OptionSpec> reflectionOptions() {
       {"gbuffer-scale", "X", scale, "1"},
       {"gbuffer-precision", "BITS", "G-buffer float bits: 32 (RGBA32F) or 16 (RGBA16F)", "32"},
       {"environment-size", "N", faceSize, std::to_string(defaults.environmentMapSize)},
-      {"plan", "SCOPE", "needed (leave out mirrors out of view and objects a mirror cannot show) | everything (planner off)",
-       "needed"},
   };
+  for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
   return specs;
 }
@@ -87,10 +109,7 @@ Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& opt
   auto cubeFace = options.integer("environment-size", passes::kMinEnvironmentMapSize, passes::kMaxEnvironmentMapSize);
   if (!cubeFace) return Error{cubeFace.error()};
   settings.environmentMapSize = *cubeFace;
-  const std::string plan = options.text("plan");
-  if (plan == "needed") settings.plan = passes::PlanScope::Needed;
-  else if (plan == "everything") settings.plan = passes::PlanScope::Everything;
-  else return Error{"--plan expects needed or everything, got '" + plan + "'"};
+  if (Status status = parsePlanOptions(options, settings); !status) return Error{status.error()};
   auto tessellation = parseTessellationOptions(options);
   if (!tessellation) return Error{tessellation.error()};
   settings.tessellation = *tessellation;

@@ -15,7 +15,13 @@ std::vector<OptionSpec> tessellationOptions();
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
 
-// The tessellation options plus --margin, --gbuffer-scale, --gbuffer-precision and --environment-size.
+// --plan and --ray-cast-pixels: what the frame plan leaves out and which mirrors it ray-casts.
+std::vector<OptionSpec> planOptions();
+
+// Reads them into `settings`, or says which value is wrong and what it accepts.
+Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& settings);
+
+// The tessellation and plan options plus --margin, --gbuffer-scale, --gbuffer-precision and --environment-size.
 std::vector<OptionSpec> reflectionOptions();
 
 // Reads them all (the method stays the default: each command names its own methods).

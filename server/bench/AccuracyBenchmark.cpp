@@ -116,6 +116,12 @@ std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
   if (std::any_of(scene.objects.begin(), scene.objects.end(), approximatesAnExactShape))
     for (const glm::ivec2 mesh : {glm::ivec2(32, 16), glm::ivec2(64, 32), glm::ivec2(128, 64), glm::ivec2(256, 128)})
       sweep.push_back({"mesh " + std::to_string(mesh.x) + "x" + std::to_string(mesh.y), "mesh", {}, mesh});
+  // Every row above measures the search, whatever the mirror's size on screen; the last casts every
+  // mirror pixel's reflected ray instead (what the planner picks for small mirrors).
+  for (AccuracySetting& setting : sweep) setting.settings.rayCastPixels = 0;
+  AccuracySetting rayCast{"ray-cast every mirror", "ray-cast", {}};
+  rayCast.settings.rayCastPixels = passes::kMaxRayCastPixels;
+  sweep.push_back(rayCast);
   return sweep;
 }
 
@@ -166,9 +172,11 @@ Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene:
     psnrs.push_back(comparison->psnr);
     ssims.push_back(comparison->ssim);
     mismatches.push_back(comparison->mirrorMismatch);
-    drawn.push_back(3 * reflectionTriangles(r, *frame, method));
+    // A frame that searched nothing ray-cast its mirrors: no virtual triangles, no reflection points.
+    const bool searchedAny = frame->search.searched > 0;
+    drawn.push_back(method == ReflectionMethod::Search && !searchedAny ? 0 : 3 * reflectionTriangles(r, *frame, method));
     searched.push_back(frame->search.searched + frame->tessellation.midpointSearches.searched);
-    if (measurePoints) {
+    if (measurePoints && searchedAny) {
       ReflectionPointErrors errors = measureReflectionPoints(r, path[i], *frame);
       points.pixels.insert(points.pixels.end(), errors.pixels.begin(), errors.pixels.end());
     }

@@ -68,6 +68,9 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"searched_per_frame", std::to_string(r.searchedPerFrame)});
   f.push_back({"hidden", std::to_string(r.hiddenPerFrame)});
   f.push_back({"unsolved", std::to_string(r.unsolvedPerFrame)});
+  f.push_back({"mirror_parts", std::to_string(r.plannedParts)});
+  f.push_back({"ray_cast_parts", std::to_string(r.rayCastParts)});
+  f.push_back({"culled_vertices", std::to_string(r.culledVertices)});
   const auto& e = r.pointError;
   f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
   f.push_back({"point_error_mean_px", e ? significant(e->mean) : ""});
@@ -333,6 +336,8 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
     std::string passes = "  passes (median ms):";
     for (const render::StageTiming& stage : r.stageMedians) passes += " " + stage.name + " " + number(stage.milliseconds, 2);
     table += passes + "\n";
+    table += "  plan (last frame): " + std::to_string(r.plannedParts) + " mirror parts, " + std::to_string(r.rayCastParts) +
+             " ray-cast, " + std::to_string(r.culledVertices) + " reflected vertices left out\n";
   }
   return table;
 }

@@ -95,8 +95,9 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   const auto poseAt = [&](int frame) { return scene::ScenePose::at(*scene, frame / options.framesPerSecond); };
 
   // Frame 0 is cold: every vertex climbs the pyramid. Its wall time includes shader compilation.
+  const passes::ReflectionSettings& settings = options.reflection;
   scene::ScenePose pose = poseAt(0);
-  auto cold = r.render(pose, options.width, options.height);
+  auto cold = r.render(pose, options.width, options.height, settings);
   if (!cold) return Error{cold.error()};
   result.firstFrameMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   StepAccumulator coldSteps;
@@ -106,7 +107,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   const bool measurePoints = hasAnalyticSphereMirror(*scene);
   ReflectionPointErrors pointErrors;
   const auto addPointErrors = [&](const render::RenderedFrame& frame) {
-    if (!measurePoints) return;
+    if (!measurePoints || frame.search.searched == 0) return;  // nothing searched: every mirror ray-cast
     ReflectionPointErrors errors = measureReflectionPoints(r, pose, frame);
     pointErrors.pixels.insert(pointErrors.pixels.end(), errors.pixels.begin(), errors.pixels.end());
     pointErrors.searchHiddenButExactVisible += errors.searchHiddenButExactVisible;
@@ -120,7 +121,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   render::RenderedFrame last = std::move(*cold);
   for (int frame = 1; frame <= options.frames; ++frame) {
     pose = poseAt(frame);
-    auto rendered = r.render(pose, options.width, options.height);
+    auto rendered = r.render(pose, options.width, options.height, settings);
     if (!rendered) return Error{rendered.error()};
     warmSteps.add(rendered->search);
     timings.push_back(rendered->timings);
@@ -134,7 +135,12 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   result.searchedPerFrame = last.search.searched;
   result.hiddenPerFrame = last.search.hidden;
   result.unsolvedPerFrame = last.search.unsolved;
-  if (measurePoints) {
+  result.plannedParts = last.plan.size();
+  for (const render::MirrorPlanSummary& part : last.plan) {
+    result.rayCastParts += part.method == passes::PartMethod::RayCast ? 1 : 0;
+    result.culledVertices += part.culledVertices;
+  }
+  if (measurePoints && !pointErrors.pixels.empty()) {  // none where every mirror was ray-cast
     result.pointError = SceneBenchResult::PointError{pointErrors.pixels.size(), pointErrors.mean(),
                                                      pointErrors.percentile(0.99), pointErrors.percentile(1.0),
                                                      pointErrors.searchHiddenButExactVisible,
@@ -150,9 +156,9 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   }
 
   if (options.coldWidth > 0 && options.coldHeight > 0) {
-    passes::ReflectionSettings settings;
-    settings.coherence = false;
-    auto large = r.render(pose, options.coldWidth, options.coldHeight, settings);
+    passes::ReflectionSettings coldStart = settings;
+    coldStart.coherence = false;
+    auto large = r.render(pose, options.coldWidth, options.coldHeight, coldStart);
     if (!large) return Error{large.error()};
     StepAccumulator largeSteps;
     largeSteps.add(large->search);

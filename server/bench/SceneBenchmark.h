@@ -9,6 +9,7 @@
 
 #include "base/Result.h"
 #include "gl/GlContext.h"
+#include "passes/ReflectionSettings.h"
 #include "render/FrameTimings.h"
 #include "scene/Scene.h"
 
@@ -20,6 +21,7 @@ struct BenchOptions {
   double framesPerSecond = 60.0;   // animation time between frames: 1 / framesPerSecond
   int coldWidth = 1280, coldHeight = 720;  // the extra cold-start frame (0 skips it)
   bool reference = true;           // compare with the ray tracer (CPU; the slowest part)
+  passes::ReflectionSettings reflection;  // defaults but for the plan options (the planner off, for comparison)
 };
 
 struct StepStatistics {
@@ -45,6 +47,8 @@ struct SceneBenchResult {
   StepStatistics coldSteps;     // the first frame: every vertex from the pyramid
   std::optional<StepStatistics> coldStepsLarge;  // cold at BenchOptions::coldWidth × coldHeight
   unsigned searchedPerFrame = 0, hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's
+  // The last frame's plan: visible mirror parts, those ray-cast, and reflected vertices left out.
+  std::size_t plannedParts = 0, rayCastParts = 0, culledVertices = 0;
 
   // Reflection-point error in pixels over all frames; absent without an analytic sphere mirror.
   struct PointError {

@@ -58,6 +58,7 @@ Result<std::vector<TessellationBenchRow>> benchmarkTessellation(
     progress(i, row.setting);
     passes::ReflectionSettings settings;
     settings.tessellation = sweep[i];
+    settings.rayCastPixels = 0;  // every mirror searched: the sweep is about its tessellation
     std::vector<double> frameTimes, tessellationTimes;
     render::RenderedFrame last;
     for (int frame = 0; frame <= options.frames; ++frame) {  // frame 0 warms up: coherence, buffer sizes

@@ -34,9 +34,20 @@ bool halfFloatsResolve(const math::Bounds& mirrorBounds) {
   return largest <= kReachInRadii * mirrorBounds.radius();
 }
 
+double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, glm::ivec2 frameSize) {
+  const double framePixels = static_cast<double>(frameSize.x) * static_cast<double>(frameSize.y);
+  if (bounds.empty()) return 0.0;
+  const double distance = glm::length(bounds.center() - camera.eye), radius = bounds.radius();
+  if (distance <= radius) return framePixels;
+  const double focal = 0.5 * frameSize.y / std::tan(glm::radians(static_cast<double>(camera.fovYDegrees)) * 0.5);
+  const double projectedRadius = focal * std::tan(std::asin(radius / distance));
+  return std::min(framePixels, 3.14159265358979 * projectedRadius * projectedRadius);
+}
+
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
-                    float aspect, const ReflectionSettings& settings) {
+                    glm::ivec2 frameSize, const ReflectionSettings& settings) {
   const math::Camera& camera = pose.camera;
+  const float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
   FramePlan plan;
   plan.passes.push_back("scene");
   if (settings.method == ReflectionMethod::None) return plan;
@@ -47,7 +58,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but searches nothing.
-    PlannedMirror planned{&mirror, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    const double pixels = projectedPixels(worldBounds[mirror.mirrorObject], camera, frameSize);
+    const bool rayCast = !everything && settings.method == ReflectionMethod::Search && pixels <= settings.rayCastPixels;
+    PlannedMirror planned{&mirror, rayCast ? PartMethod::RayCast : PartMethod::VirtualObjects, pixels, {},
+                          !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
     for (const ReflectionSlotRange& range : mirror.reflected) {
       if (everything || (!planned.facesAway && canAppearIn(mirror.reach, mirrorToWorld, worldBounds[range.object], camera.eye))) {
         planned.reflected.push_back(&range);
@@ -66,8 +80,12 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "environment-map"});
     return plan;
   }
-  plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "gbuffer-pyramid", "search"});
-  plan.tessellate = settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
+  plan.passes.push_back("mirror-gbuffer");
+  // Searching (and so its pyramid and tessellation) only for parts drawn as virtual objects.
+  const bool searched = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
+                                    [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
+  if (searched) plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"});
+  plan.tessellate = searched && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back("tessellation");
   plan.passes.push_back("virtual-objects");
   return plan;

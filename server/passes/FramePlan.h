@@ -12,9 +12,17 @@
 
 namespace specula::passes {
 
+// How a planned mirror part finds what it reflects.
+enum class PartMethod {
+  VirtualObjects,  // search every reflected vertex, tessellate, rasterize the virtual objects
+  RayCast,         // cast each of its pixels' reflected rays against the objects' meshes
+};
+
 // A mirror part whose reflection is drawn this frame, and the reflected objects that can appear in it.
 struct PlannedMirror {
   const MirrorSlots* slots = nullptr;
+  PartMethod method = PartMethod::VirtualObjects;
+  double projectedPixels = 0.0;  // the mirror's, about (projectedPixels()): what the method was chosen by
   std::vector<const ReflectionSlotRange*> reflected;
   bool facesAway = false;  // the eye is behind every tangent plane of the part: nothing is searched
   std::size_t culledObjects = 0, culledVertices = 0;  // left out: behind the part or in its shadow
@@ -32,11 +40,15 @@ struct FramePlan {
 // search: their spacing at the mirror's largest coordinate must stay under ~1/100 of its radius.
 bool halfFloatsResolve(const math::Bounds& mirrorBounds);
 
-// worldBounds: one box per scene object at this frame's pose. aspect = width / height. With
-// settings.plan Needed, a mirror out of the frustum is left out, and so is a reflected object that
-// cannot appear in a part (passes::canAppearIn); Everything keeps every mirror and object.
+// worldBounds: one box per scene object at this frame's pose. With settings.plan Needed, a mirror
+// out of the frustum is left out, and so is a reflected object that cannot appear in a part
+// (passes::canAppearIn); a mirror covering at most settings.rayCastPixels is ray-cast. Everything
+// keeps every mirror and object and searches them all.
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
-                    float aspect, const ReflectionSettings& settings);
+                    glm::ivec2 frameSize, const ReflectionSettings& settings);
+
+// Frame pixels the box's enclosing sphere covers, about (all of them when the eye is inside it).
+double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, glm::ivec2 frameSize);
 
 // Whether a world-space box can be seen through the camera's frustum widened by `margin`.
 bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, float aspect, float margin);

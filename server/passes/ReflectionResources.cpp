@@ -33,7 +33,7 @@ void upload(const gl::GlApi& gl, const gl::GlBuffer& buffer, const std::vector<T
 }  // namespace
 
 ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots)
-    : gl_(&gl), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
+    : gl_(&gl), scene_(scene), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
       statistics_(gl), tessellation_(gl) {
   allocateSlots(gl, reflected_, slots.slotCount);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
@@ -44,27 +44,30 @@ ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene
     packed.resize((packed.size() + 3) / 4 * 4, 0);  // whole uints
     upload(gl, triangleParts_.emplace(mirrorObject, gl::GlBuffer(gl)).first->second, packed);
   }
-  for (const MirrorSlots& mirror : slots.mirrors) {
-    if (!mirror.seesItself || mirror.part != 0) continue;
-    const scene::Mesh& mesh = scene.meshes[scene.objects[mirror.mirrorObject].mesh];
-    std::vector<glm::vec3> positions;
-    positions.reserve(mesh.vertices.size());
-    math::Bounds bounds;
-    for (const scene::Vertex& v : mesh.vertices) {
-      positions.push_back(v.position);
-      bounds.add(v.position);
-    }
-    const math::TriangleBvh bvh = math::TriangleBvh::build(positions, mesh.indices);
-    MirrorBvh& buffers = mirrorBvhs_.emplace(mirror.mirrorObject, MirrorBvh{gl::GlBuffer(gl), gl::GlBuffer(gl), 0.0f}).first->second;
-    upload(gl, buffers.nodes, bvh.nodes());
-    upload(gl, buffers.triangles, bvh.triangles());
-    // Float rounding of the start point, well below any feature of the mirror.
-    buffers.minDistance = 1e-4f * std::max(bounds.radius(), 1e-30f);
-  }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   resetCoherence();
   covered_.resize(slots.mirrors.size());
   changed_.resize(slots.mirrors.size());
+}
+
+const ReflectionResources::MeshBvh& ReflectionResources::meshBvh(std::uint32_t mesh) {
+  if (const auto built = meshBvhs_.find(mesh); built != meshBvhs_.end()) return built->second;
+  const scene::Mesh& source = scene_.meshes[mesh];
+  std::vector<glm::vec3> positions;
+  positions.reserve(source.vertices.size());
+  math::Bounds bounds;
+  for (const scene::Vertex& v : source.vertices) {
+    positions.push_back(v.position);
+    bounds.add(v.position);
+  }
+  const math::TriangleBvh bvh = math::TriangleBvh::build(positions, source.indices);
+  MeshBvh& buffers = meshBvhs_.emplace(mesh, MeshBvh{gl::GlBuffer(*gl_), gl::GlBuffer(*gl_), 0.0f}).first->second;
+  upload(*gl_, buffers.nodes, bvh.nodes());
+  upload(*gl_, buffers.triangles, bvh.triangles());
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  // Float rounding of the start point, well below any feature of the mesh.
+  buffers.minDistance = 1e-4f * std::max(bounds.radius(), 1e-30f);
+  return buffers;
 }
 
 Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 margin, float texelsPerPixel,

@@ -31,11 +31,11 @@ class ReflectionResources {
  public:
   static constexpr int kCoarsestSide = 8;  // the cold start scans a pyramid level at most this big
 
-  // The hierarchy of a mirror's own mesh on the GPU (shaders/common/triangle-bvh.glsl), for
-  // mirrors whose reflected rays may meet them again.
-  struct MirrorBvh {
+  // The hierarchy of a mesh on the GPU (shaders/common/triangle-bvh.glsl), for casting reflected
+  // rays against it: a mirror's own mesh where it may see itself, an object's in a ray-cast part.
+  struct MeshBvh {
     gl::GlBuffer nodes, triangles;
-    float minDistance = 0.0f;  // object space: hits nearer the ray's start are its own surface
+    float minDistance = 0.0f;  // object space: hits nearer the ray's start are the surface it starts on
   };
 
   ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots);
@@ -64,7 +64,8 @@ class ReflectionResources {
   // The part of each triangle of a mirror's search mesh (bytes, four to a uint), for mirrors of several parts.
   GLuint triangleParts(std::size_t mirrorObject) const { return triangleParts_.at(mirrorObject).id(); }
   // Set for every mirror with MirrorSlots::seesItself.
-  const MirrorBvh& mirrorBvh(std::size_t mirrorObject) const { return mirrorBvhs_.at(mirrorObject); }
+  // Built on first use and kept (meshes do not change; objects move rigidly).
+  const MeshBvh& meshBvh(std::uint32_t mesh);
   TessellationBuffers& tessellation() { return tessellation_; }
   const TessellationBuffers& tessellation() const { return tessellation_; }
 
@@ -86,6 +87,7 @@ class ReflectionResources {
 
  private:
   const gl::GlApi* gl_;
+  const scene::Scene& scene_;
   const ReflectionSlots& slots_;
   glm::ivec2 size_{0}, margin_{0}, coveredPixels_{0};
   GBufferPrecision precision_ = GBufferPrecision::Float32;
@@ -94,7 +96,7 @@ class ReflectionResources {
   gl::GlFramebuffer framebuffer_;
   gl::GlBuffer reflected_, statistics_;
   std::map<std::size_t, gl::GlBuffer> triangleParts_;
-  std::map<std::size_t, MirrorBvh> mirrorBvhs_;
+  std::map<std::uint32_t, MeshBvh> meshBvhs_;
   std::vector<TexelRect> covered_, changed_;
   TessellationBuffers tessellation_;
 };

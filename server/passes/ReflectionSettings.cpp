@@ -24,6 +24,8 @@ std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& s
   if (settings.environmentMapSize < kMinEnvironmentMapSize || settings.environmentMapSize > kMaxEnvironmentMapSize)
     return "environment map size must lie in [" + std::to_string(kMinEnvironmentMapSize) + ", " +
            std::to_string(kMaxEnvironmentMapSize) + "] texels per cube face";
+  if (settings.rayCastPixels < 0 || settings.rayCastPixels > kMaxRayCastPixels)
+    return "the ray-cast pixel bound must lie in [0, " + std::to_string(kMaxRayCastPixels) + "]";
   if (settings.maxWalkSteps < 1) return "the search needs at least one step per climb";
   return std::nullopt;
 }

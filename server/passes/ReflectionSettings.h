@@ -51,6 +51,7 @@ std::string describeTessellation(const TessellationSettings& settings);
 // The ranges reflectionSettingsProblem() accepts (and the command-line options name).
 inline constexpr float kMinGBufferScale = 0.125f, kMaxGBufferScale = 4.0f;
 inline constexpr int kMinEnvironmentMapSize = 8, kMaxEnvironmentMapSize = 2048;
+inline constexpr int kMaxRayCastPixels = 1 << 24;
 
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;
@@ -65,6 +66,9 @@ struct ReflectionSettings {
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb
   PlanScope plan = PlanScope::Needed;
+  // A mirror whose projected bounds cover at most this many frame pixels has each pixel's reflected
+  // ray cast against its reflected objects (exact) instead of searching their every vertex; 0: never.
+  int rayCastPixels = 16384;
   TessellationSettings tessellation;
 };
 

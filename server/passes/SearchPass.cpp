@@ -89,6 +89,7 @@ void SearchPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, resources.statistics());
 
   for (const PlannedMirror& mirror : frame.plan.mirrors) {
+    if (mirror.method != PartMethod::VirtualObjects) continue;
     setSearchMirror(program_, frame, *mirror.slots);
     for (const ReflectionSlotRange* range : mirror.reflected) {
       const scene::SceneObject& object = frame.scene.objects[range->object];

@@ -56,6 +56,7 @@ void TessellationPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, buffers.counters());
   for (std::size_t part = 0; part < frame.plan.mirrors.size(); ++part) {
     const PlannedMirror& planned = frame.plan.mirrors[part];
+    if (planned.method != PartMethod::VirtualObjects) continue;
     const MirrorSlots* mirror = planned.slots;
     for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search}) {
       program->use();

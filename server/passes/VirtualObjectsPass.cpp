@@ -21,13 +21,12 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   if (!tessellated) return Error{tessellated.error()};
   auto region = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/mirror-region.frag"});
   if (!region) return Error{region.error()};
-  auto selfReflection =
-      gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/self-reflection.frag"});
-  if (!selfReflection) return Error{selfReflection.error()};
+  auto rayCast = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/ray-cast.frag"});
+  if (!rayCast) return Error{rayCast.error()};
   auto composite = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/reflection-composite.frag"});
   if (!composite) return Error{composite.error()};
   return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
-                                                                    std::move(region.value()), std::move(selfReflection.value()),
+                                                                    std::move(region.value()), std::move(rayCast.value()),
                                                                     std::move(composite.value())));
 }
 
@@ -60,26 +59,26 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMir
   }
 }
 
-void VirtualObjectsPass::drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror) const {
+void VirtualObjectsPass::rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t objectIndex) const {
   const gl::GlApi& gl = frame.gl;
-  const ReflectionResources& resources = frame.reflections;
-  const ReflectionResources::MirrorBvh& bvh = resources.mirrorBvh(mirror.mirrorObject);
-  const scene::SceneObject& object = frame.scene.objects[mirror.mirrorObject];
-  const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror.mirrorObject];
-  selfReflection_.use();  // the G-buffer textures are bound by execute()
-  selfReflection_.set("gbufferPosition", 0);
-  selfReflection_.set("gbufferNormal", 1);
-  setGBufferPixelMapping(selfReflection_, resources);
-  selfReflection_.set("layer", mirror.layer);
-  selfReflection_.set("eyePosition", frame.pose.camera.eye);
-  selfReflection_.set("objectToWorld", objectToWorld);
-  selfReflection_.set("worldToObject", glm::inverse(objectToWorld));
-  selfReflection_.set("normalToWorld", math::normalMatrix(objectToWorld));
-  selfReflection_.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-  selfReflection_.set("minDistance", bvh.minDistance);
-  selfReflection_.set("reflectivity", frame.scene.materials[object.material].reflectivity);
-  setSceneLighting(selfReflection_, frame.scene);
-  setMaterial(selfReflection_, frame.scene.materials[object.material]);
+  ReflectionResources& resources = frame.reflections;
+  const scene::SceneObject& object = frame.scene.objects[objectIndex];
+  const ReflectionResources::MeshBvh& bvh = resources.meshBvh(object.mesh);
+  const glm::mat4& objectToWorld = frame.pose.objectToWorld[objectIndex];
+  rayCast_.use();  // the G-buffer textures are bound by execute()
+  rayCast_.set("gbufferPosition", 0);
+  rayCast_.set("gbufferNormal", 1);
+  setGBufferPixelMapping(rayCast_, resources);
+  rayCast_.set("layer", mirror.layer);
+  rayCast_.set("eyePosition", frame.pose.camera.eye);
+  rayCast_.set("objectToWorld", objectToWorld);
+  rayCast_.set("worldToObject", glm::inverse(objectToWorld));
+  rayCast_.set("normalToWorld", math::normalMatrix(objectToWorld));
+  rayCast_.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+  rayCast_.set("minDistance", bvh.minDistance);
+  rayCast_.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
+  setSceneLighting(rayCast_, frame.scene);
+  setMaterial(rayCast_, frame.scene.materials[object.material]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, bvh.nodes.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, bvh.triangles.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, frame.meshes.vertexBuffer(object.mesh));
@@ -160,8 +159,18 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setForBoth("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
     setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
     setForBoth("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
-    if (mirror->seesItself) drawSelfReflection(frame, *mirror);
-    drawObjects(frame, planned);
+    if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
+    if (planned.method == PartMethod::RayCast) {
+      // Only the part's pixels: the ray-cast shader is costly and discards the rest anyway.
+      const glm::vec4 rect = frame.reflections.coveredFramePixels(mirror->layer);
+      gl.Enable(GL_SCISSOR_TEST);
+      const glm::ivec2 low(glm::floor(glm::vec2(rect.x, rect.y))), high(glm::ceil(glm::vec2(rect.z, rect.w)));
+      gl.Scissor(low.x, low.y, std::max(0, high.x - low.x), std::max(0, high.y - low.y));
+      for (const ReflectionSlotRange* range : planned.reflected) rayCast(frame, *mirror, range->object);
+      gl.Disable(GL_SCISSOR_TEST);
+    } else {
+      drawObjects(frame, planned);
+    }
   }
 
   // Each mirror's reflection (or its reflected background) added over its surface in the frame.

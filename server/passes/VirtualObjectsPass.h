@@ -20,11 +20,11 @@ class VirtualObjectsPass final : public Pass {
 
  private:
   VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region,
-                     gl::ShaderProgram selfReflection, gl::ShaderProgram composite)
+                     gl::ShaderProgram rayCast, gl::ShaderProgram composite)
       : objects_(std::move(objects)),
         tessellated_(std::move(tessellated)),
         region_(std::move(region)),
-        selfReflection_(std::move(selfReflection)),
+        rayCast_(std::move(rayCast)),
         composite_(std::move(composite)),
         emptyVertexArray_(gl),
         framebuffer_(gl),
@@ -34,8 +34,9 @@ class VirtualObjectsPass final : public Pass {
   void bindReflectionBuffer(const FrameContext& frame);
   // Sets the depth inside the mirror's stencil to the far plane.
   void resetMirrorDepth(const FrameContext& frame) const;
-  // Where the part's reflected rays meet the mirror itself: the mirror's colour at that depth.
-  void drawSelfReflection(const FrameContext& frame, const MirrorSlots& mirror) const;
+  // Casts the part's reflected rays against one object's mesh (the mirror's own where it sees itself)
+  // and draws the nearest hits at their depth.
+  void rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t object) const;
   // Draws the mirror's virtual objects with whichever program each needs.
   void drawObjects(const FrameContext& frame, const PlannedMirror& mirror) const;
   // One reflected object from its own mesh and search slots (objects_ in use).
@@ -51,7 +52,7 @@ class VirtualObjectsPass final : public Pass {
   gl::ShaderProgram objects_;      // scene meshes at their search slots
   gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles
   gl::ShaderProgram region_;
-  gl::ShaderProgram selfReflection_;
+  gl::ShaderProgram rayCast_;
   gl::ShaderProgram composite_;
   gl::GlVertexArray emptyVertexArray_;  // the full-screen triangle needs no attributes
   gl::GlFramebuffer framebuffer_;       // the reflection buffer with the frame's depth and stencil

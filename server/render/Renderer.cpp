@@ -1,5 +1,6 @@
 #include "render/Renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -112,7 +113,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
-  const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, aspect, settings);
+  const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, {width, height}, settings);
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
@@ -140,13 +141,14 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   RenderedFrame result{width, height, target_->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision, {}};
   for (const passes::PlannedMirror& mirror : plan.mirrors) {
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
-    MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part, mirror.slots->kind, mirror.facesAway, mirror.reflected.size(), 0,
+    MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part, mirror.slots->kind, mirror.method, mirror.projectedPixels, mirror.facesAway, mirror.reflected.size(), 0,
                               mirror.culledObjects, mirror.culledVertices};
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }
   mark(marks - 1);
-  if (!plan.mirrors.empty()) result.search = reflections_.readStatistics();
+  // The statistics buffer is reset by the search pass: a frame without it (every mirror ray-cast) searched nothing.
+  if (std::find(plan.passes.begin(), plan.passes.end(), "search") != plan.passes.end()) result.search = reflections_.readStatistics();
   if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();
 
   std::vector<double> times(marks, 0.0);

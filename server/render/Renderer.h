@@ -30,6 +30,8 @@ struct MirrorPlanSummary {
   std::size_t mirrorObject = 0;  // index into Scene::objects
   int part = 0;
   scene::SurfaceKind kind = scene::SurfaceKind::Convex;
+  passes::PartMethod method = passes::PartMethod::VirtualObjects;
+  double projectedPixels = 0.0;  // the mirror's bounds on screen, about: what the method was chosen by
   bool facesAway = false;  // the eye sees only its back: nothing searched
   std::size_t searchedObjects = 0, searchedVertices = 0;
   std::size_t culledObjects = 0, culledVertices = 0;

@@ -6,7 +6,8 @@ set -uo pipefail
 specula="$1"
 source "$(dirname "$0")/checks.sh"
 
-output=$("$specula" bench --scenes checker-sphere,kitchen --size 160x120 --frames 3 --cold-size 320x240 \
+# Every mirror searched (at 160x120 the planner would ray-cast them): the search's columns filled.
+output=$("$specula" bench --scenes checker-sphere,kitchen --size 160x120 --frames 3 --cold-size 320x240 --ray-cast-pixels 0 \
   --csv "$work/b.csv" --json "$work/b.json" 2>"$work/progress.txt")
 check "bench succeeds on two scenes" test $? -eq 0
 check "bench reports progress per scene" grep -q "bench \[2/2\] kitchen: done in" "$work/progress.txt"
@@ -30,6 +31,7 @@ check "the JSON writes null where nothing was measured" grep -q '"point_error_p9
 
 "$specula" bench --scenes quad --size 64x48 --frames 1 --cold-size none --no-reference --csv "$work/q.csv" --json "$work/q.json" >/dev/null 2>&1
 check "bench succeeds without reference and large cold frame" test $? -eq 0
+check "by default the planner ray-casts the quad's small sphere" test "$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) at[$i] = i } NR == 2 { print $at["ray_cast_parts"] }' "$work/q.csv")" = 1
 check "that CSV has a header and one row" test "$(wc -l <"$work/q.csv")" -eq 2
 check "--no-reference and --cold-size none leave those cells empty" bash -c "[[ -z \"\$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) at[\$i] = i } NR == 2 { print \$at[\"psnr_db\"] \$at[\"steps_cold_large_mean\"] }' '$work/q.csv')\" ]]"
 
@@ -64,8 +66,8 @@ fails_with "bench tessellation checks its outputs before work" "could not write 
 output=$("$specula" bench accuracy --scene quad --size 128x96 --poses 2 --out "$work/acc" 2>"$work/aprogress.txt")
 check "bench accuracy succeeds" test $? -eq 0
 check "bench accuracy reports progress per reference pose and setting" bash -c \
-  "grep -q 'bench accuracy quad \[1/19\] ray-traced reference, pose 1/2' '$work/aprogress.txt' && grep -q '\[19/19\] G-buffer RGBA16F' '$work/aprogress.txt'"
-check "its CSV has a header, the reference and 17 settings" test "$(wc -l <"$work/acc/accuracy.csv")" -eq 19
+  "grep -q 'bench accuracy quad \[1/20\] ray-traced reference, pose 1/2' '$work/aprogress.txt' && grep -q '\[20/20\] ray-cast every mirror' '$work/aprogress.txt'"
+check "its CSV has a header, the reference and 18 settings" test "$(wc -l <"$work/acc/accuracy.csv")" -eq 20
 acolumns=$(head -1 "$work/acc/accuracy.csv" | tr ',' '\n' | wc -l)
 check "every accuracy CSV row has the header's columns (names with commas quoted)" \
   bash -c "sed 's/\"[^\"]*\"/name/g' '$work/acc/accuracy.csv' | awk -F, -v n=$acolumns 'NF != n { exit 1 }'"
@@ -74,6 +76,8 @@ avalue() { sed 's/"[^"]*"/quoted/g' "$work/acc/accuracy.csv" | awk -F, -v settin
 check "full level 4 is closer to the reference than the environment map" \
   awk -v a="$(avalue 'full level 4' mirror_mismatch)" -v b="$(avalue 'environment map 256 px' mirror_mismatch)" 'BEGIN { exit !(a < b) }'
 check "the quad's analytic sphere gets a reflection-point error" awk -v e="$(avalue 'full level 4' point_error_p99_px)" 'BEGIN { exit !(e != "" && e < 1) }'
+check "ray-casting every mirror matches the ray tracer" awk -v m="$(avalue 'ray-cast every mirror' mirror_mismatch)" 'BEGIN { exit !(m != "" && m < 0.005) }'
+check "... and searches nothing, so has no reflection points" test -z "$(avalue 'ray-cast every mirror' point_error_p99_px)"
 check "the environment map has no reflection points to measure" test -z "$(avalue 'environment map 256 px' point_error_p99_px)"
 check "some setting is on the Pareto front" grep -q ',true$' "$work/acc/accuracy.csv"
 check "the reference is never on it" grep -q '^quad,ray-traced reference,reference,.*,false$' "$work/acc/accuracy.csv"

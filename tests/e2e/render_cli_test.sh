@@ -25,7 +25,7 @@ fails_with "an unknown option is refused" "unknown option --colour" render --col
 fails_with "an unknown GL backend is refused" "--gl expects auto, egl-device" render --gl glx
 fails_with "an unknown GL backend is refused for the ray tracer too" "--gl expects auto, egl-device" render --method raytrace --gl glx
 fails_with "an unwritable output names the file" "could not write '$work/missing/dir/f.png'" render --size 8x8 --out "$work/missing/dir/f.png"
-output=$("$specula" render --scene quad --size 160x120 --tessellation crack-free --threshold 0 --level 2 --out "$work/q.png" 2>&1)
+output=$("$specula" render --scene quad --size 160x120 --ray-cast-pixels 0 --tessellation crack-free --threshold 0 --level 2 --out "$work/q.png" 2>&1)
 check "render prints the tessellation it did" grep -q "tessellation: 2 -> 32 triangles; working per round 2 8 32" <<<"$output"
 output=$("$specula" render --scene quad --size 160x120 --tessellation none --out "$work/q0.png" 2>&1)
 check "--tessellation none runs no tessellation pass" bash -c "! grep -q tessellation <<<'$output'"
@@ -41,7 +41,11 @@ fails_with "a cube face past the bound is refused" "--environment-size expects a
 fails_with "a margin past the bound is refused" "--margin expects a share in [0, 1]" render --margin 2
 fails_with "a bad plan scope names the choices" "--plan expects needed or everything, got 'some'" render --plan some
 output=$("$specula" render --scene checker-sphere --size 96x72 --out "$work/p.png" 2>&1)
-check "render prints the plan per mirror part" grep -q "plan: mirror 'mirror-sphere' part 0 (convex): 1 objects, 289 vertices searched; 0 objects" <<<"$output"
+check "render prints the plan per mirror part: a small mirror is ray-cast" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): ray-cast 1 objects (289 vertices); 0 objects" <<<"$output"
+check "... and runs no search" bash -c "! grep -q ' search ' <<<'$output'"
+output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast-pixels 0 --out "$work/p0.png" 2>&1)
+check "--ray-cast-pixels 0 searches every mirror" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
+fails_with "a negative ray-cast bound is refused by name" "--ray-cast-pixels expects an integer in [0, 16777216]" render --ray-cast-pixels -5
 check "--plan everything renders too" "$specula" render --scene checker-sphere --size 96x72 --plan everything --out "$work/pe.png"
 "$specula" render --method environment-map --environment-size 32 --gbuffer-scale 0.5 --gbuffer-precision 16 --size 96x72 --out "$work/env.png" >"$work/env.txt" 2>&1
 check "the environment-map method renders with the G-buffer options" test $? -eq 0

@@ -8,6 +8,7 @@
 #include "gl/GlContext.h"
 #include "reference/ImageMetrics.h"
 #include "reference/RayTracer.h"
+#include "SceneRig.h"
 #include "render/Renderer.h"
 #include "scene/Primitives.h"
 #include "scene/ScenePose.h"
@@ -54,7 +55,7 @@ double mirrorMismatch(gl::GlContext& gl, std::shared_ptr<const scene::Scene> sce
   EXPECT_TRUE(truth) << truth.error();
   auto renderer = render::Renderer::create(gl, scene);
   EXPECT_TRUE(renderer) << renderer.error();
-  auto frame = (*renderer)->render(pose, 320, 240, settings);
+  auto frame = (*renderer)->render(pose, 320, 240, specula::testing::virtualObjects(settings));
   EXPECT_TRUE(frame) << frame.error();
   auto comparison = bench::compareWithReference(*frame, *truth);
   EXPECT_TRUE(comparison) << comparison.error();
@@ -119,7 +120,7 @@ TEST(TemporalStability, PerFrameImageChangeInsideTheMirrorTracksTheRayTracer) {
     pose.camera.eye = pose.camera.target + glm::vec3(swing * glm::vec4(pose.camera.eye - pose.camera.target, 0.0f));
     auto truth = (*tracer)->render(pose, {kWidth, kHeight, 1, 0});
     ASSERT_TRUE(truth) << truth.error();
-    auto ours = (*renderer)->render(pose, kWidth, kHeight);
+    auto ours = (*renderer)->render(pose, kWidth, kHeight, specula::testing::virtualObjects());
     ASSERT_TRUE(ours) << ours.error();
     if (i > 0) {
       const auto change = [&](const std::vector<std::uint8_t>& before, const std::vector<std::uint8_t>& now) {

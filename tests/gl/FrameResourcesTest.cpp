@@ -17,18 +17,22 @@ using specula::testing::makeRig;
 using specula::testing::Rig;
 
 TEST(FrameResources, FramesOfOneSizeCreateNoGlObjects) {
-  Rig rig = makeRig("kitchen");  // a mirror of two parts that sees itself, tessellated
-  ASSERT_TRUE(rig.renderer);
-  const scene::Scene& scene = rig.renderer->scene();
-  for (int i = 0; i < 2; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240));
-  const std::uint64_t before = gl::glObjectsCreated.load();
-  for (int i = 2; i < 6; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240));
-  EXPECT_EQ(gl::glObjectsCreated.load(), before) << "render targets, buffers and queries are kept between frames";
-  ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 1.0), 256, 192));
-  EXPECT_GT(gl::glObjectsCreated.load(), before) << "a new size needs new targets";
-  const std::uint64_t resized = gl::glObjectsCreated.load();
-  ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 1.1), 256, 192));
-  EXPECT_EQ(gl::glObjectsCreated.load(), resized);
+  // The kitchen: a mirror of two parts that sees itself, searched and tessellated, or (the planner's
+  // choice at this size) ray-cast against every object's hierarchy.
+  for (const passes::ReflectionSettings& settings : {specula::testing::virtualObjects(), passes::ReflectionSettings{}}) {
+    Rig rig = makeRig("kitchen");
+    ASSERT_TRUE(rig.renderer);
+    const scene::Scene& scene = rig.renderer->scene();
+    for (int i = 0; i < 2; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));
+    const std::uint64_t before = gl::glObjectsCreated.load();
+    for (int i = 2; i < 6; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));
+    EXPECT_EQ(gl::glObjectsCreated.load(), before) << "render targets, buffers and queries are kept between frames";
+    ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 1.0), 256, 192, settings));
+    EXPECT_GT(gl::glObjectsCreated.load(), before) << "a new size needs new targets";
+    const std::uint64_t resized = gl::glObjectsCreated.load();
+    ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 1.1), 256, 192, settings));
+    EXPECT_EQ(gl::glObjectsCreated.load(), resized);
+  }
 }
 
 // On a CPU rasterizer a pass's draws run when a later command flushes them; timed by the wall clock

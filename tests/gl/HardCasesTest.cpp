@@ -14,6 +14,7 @@
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
 #include "scene/builtin/SceneAssembly.h"
+#include "SceneRig.h"
 
 namespace specula::testing {
 namespace {
@@ -76,7 +77,7 @@ Outcome renderAndMeasure(render::Renderer& renderer, const math::Camera& camera,
   scene::ScenePose pose = scene::ScenePose::at(renderer.scene(), 0.0);
   pose.camera = camera;
   Outcome out;
-  auto frame = renderer.render(pose, width, height, settings);
+  auto frame = renderer.render(pose, width, height, virtualObjects(settings));
   EXPECT_TRUE(frame) << (frame ? "" : frame.error());
   if (!frame) return out;
   out.slots = renderer.readReflectedVertices().size();
@@ -456,7 +457,7 @@ TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
   ASSERT_TRUE(renderer) << renderer.error();
   for (double t : {0.0, 5.0, 10.0}) {  // the camera path runs from far to right above the bowl
     const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
-    auto frame = (*renderer)->render(pose, 320, 240);
+    auto frame = (*renderer)->render(pose, 320, 240, virtualObjects());
     ASSERT_TRUE(frame) << frame.error();
     EXPECT_GT(frame->search.searched, 0u) << "t=" << t;
     EXPECT_EQ(nonFiniteResults(**renderer), 0u) << "t=" << t;
@@ -464,7 +465,7 @@ TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
   // Edge-on: the eye in the plane of the rim (0.86 m up), so the concave inside is seen at 0°.
   scene::ScenePose edgeOn = scene::ScenePose::at((*renderer)->scene(), 0.0);
   edgeOn.camera = lookAt({0.7f, 0.86f, 0.7f}, {0.0f, 0.86f, 0.0f}, 30.0f);
-  auto frame = (*renderer)->render(edgeOn, 320, 240);
+  auto frame = (*renderer)->render(edgeOn, 320, 240, virtualObjects());
   ASSERT_TRUE(frame) << frame.error();
   EXPECT_FALSE(frame->drawnMirrors.empty()) << "the bowl is in view edge-on";
   EXPECT_EQ(nonFiniteResults(**renderer), 0u) << "edge-on";

@@ -15,6 +15,7 @@
 #include "gl/GlContext.h"
 #include "reference/ImageMetrics.h"
 #include "reference/RayTracer.h"
+#include "SceneRig.h"
 #include "render/Renderer.h"
 #include "scene/Primitives.h"
 #include "scene/SceneLoader.h"
@@ -54,7 +55,8 @@ Comparison compare(const std::shared_ptr<const scene::Scene>& scene, const scene
   auto renderer = render::Renderer::create(**context, scene);
   EXPECT_TRUE(renderer) << renderer.error();
   if (!renderer) return result;
-  auto frame = (*renderer)->render(pose, kWidth, kHeight);
+  // The general path under test: every mirror searched, however small on screen.
+  auto frame = (*renderer)->render(pose, kWidth, kHeight, specula::testing::virtualObjects());
   EXPECT_TRUE(frame) << frame.error();
   auto tracer = reference::RayTracer::create(truth ? truth : scene);
   EXPECT_TRUE(tracer) << tracer.error();
@@ -129,7 +131,7 @@ TEST(MeshMirror, TessellatedSphereReflectionPointsStayWithinHalfAPixel) {
   ASSERT_TRUE(renderer) << renderer.error();
   for (double t : {0.0, 4.0, 11.0}) {
     const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
-    auto frame = (*renderer)->render(pose, kWidth, kHeight);
+    auto frame = (*renderer)->render(pose, kWidth, kHeight, specula::testing::virtualObjects());
     ASSERT_TRUE(frame) << frame.error();
     const auto errors = bench::measureReflectionPoints(**renderer, pose, *frame);
     ASSERT_GT(errors.pixels.size(), 100u);

@@ -13,6 +13,7 @@
 #include "render/Renderer.h"
 #include "scene/SceneLoader.h"
 #include "scene/ScenePose.h"
+#include "scene/builtin/BuiltinScenes.h"
 
 using namespace specula;
 
@@ -154,4 +155,97 @@ TEST(Planner, FlatPartsLeaveOutWhatIsBehindThemAndPartsFacingAwaySearchNothing) 
   ASSERT_TRUE(mismatch) << mismatch.error();
   EXPECT_GT(mismatch->inside, 10000u);
   EXPECT_LE(mismatch->share(), 0.01) << "the planned frame against the ray tracer";
+}
+
+namespace {
+
+// Share of the ray tracer's mirror pixels the frame gets strongly wrong.
+double mismatchAgainstTheRayTracer(const std::shared_ptr<const scene::Scene>& scene, const scene::ScenePose& pose,
+                                   const render::RenderedFrame& frame) {
+  auto tracer = reference::RayTracer::create(scene);
+  EXPECT_TRUE(tracer) << tracer.error();
+  if (!tracer) return 1.0;
+  auto reference = (*tracer)->render(pose, {frame.width, frame.height});
+  EXPECT_TRUE(reference) << reference.error();
+  if (!reference) return 1.0;
+  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height}, {reference->rgba, frame.width, frame.height},
+                                            reference->mirrorMask);
+  EXPECT_TRUE(mismatch) << mismatch.error();
+  return mismatch ? mismatch->share() : 1.0;
+}
+
+}  // namespace
+
+// The ants' eyes and the kitchen bowl cover a few hundred to a few thousand pixels while reflecting
+// tens of thousands of vertices: the planner casts their pixels' rays instead, which is exact.
+TEST(Planner, MirrorsCoveringFewPixelsAreRayCastAndMatchTheRayTracer) {
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  ASSERT_TRUE(context) << context.error();
+  for (const char* name : {"ants", "kitchen"}) {
+    const auto scene = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(name));
+    auto renderer = render::Renderer::create(**context, scene);
+    ASSERT_TRUE(renderer) << renderer.error();
+    const scene::ScenePose pose = scene::ScenePose::at(*scene, 1.0);
+    auto frame = (*renderer)->render(pose, 640, 480);
+    ASSERT_TRUE(frame) << frame.error();
+    ASSERT_FALSE(frame->plan.empty()) << name;
+    for (const render::MirrorPlanSummary& part : frame->plan) {
+      EXPECT_EQ(part.method, passes::PartMethod::RayCast) << name << ": ~" << part.projectedPixels << " px";
+      EXPECT_LE(part.projectedPixels, passes::ReflectionSettings{}.rayCastPixels);
+    }
+    EXPECT_EQ(frame->search.searched, 0u) << name << ": nothing searched";
+    const double mismatch = mismatchAgainstTheRayTracer(scene, pose, *frame);
+    std::printf("%s ray-cast: %.2f %% of its mirror pixels differ from the ray tracer\n", name, 100.0 * mismatch);
+    EXPECT_LE(mismatch, 0.005) << name;
+
+    passes::ReflectionSettings everything;
+    everything.plan = passes::PlanScope::Everything;
+    auto searched = (*renderer)->render(pose, 640, 480, everything);
+    ASSERT_TRUE(searched) << searched.error();
+    for (const render::MirrorPlanSummary& part : searched->plan) EXPECT_EQ(part.method, passes::PartMethod::VirtualObjects) << name;
+    EXPECT_GT(searched->search.searched, 0u) << name << ": --plan everything searches";
+  }
+  // checker-sphere's mirror fills a large share of the frame: it is searched.
+  const auto sphere = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere"));
+  auto renderer = render::Renderer::create(**context, sphere);
+  ASSERT_TRUE(renderer) << renderer.error();
+  auto frame = (*renderer)->render(scene::ScenePose::at(*sphere, 0.0), 640, 480);
+  ASSERT_TRUE(frame) << frame.error();
+  ASSERT_EQ(frame->plan.size(), 1u);
+  EXPECT_EQ(frame->plan[0].method, passes::PartMethod::VirtualObjects);
+  EXPECT_GT(frame->search.searched, 0u);
+}
+
+// An object that was in the mirror's shadow, and so left out, moves into view: the very frame it can
+// appear it is searched again (from its stale seeds) and drawn as without the planner.
+TEST(Planner, AnObjectLeavingTheShadowReappearsTheFrameItCanBeSeen) {
+  const auto scene = parse(sphereWithAHiddenBall(R"({"curvature": "convex"})"));
+  ASSERT_TRUE(scene);
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  ASSERT_TRUE(context) << context.error();
+  auto planned = render::Renderer::create(**context, scene);
+  auto everything = render::Renderer::create(**context, scene);
+  ASSERT_TRUE(planned && everything);
+  std::size_t hiddenBall = 0;
+  while (scene->objects[hiddenBall].name != "hidden-ball") ++hiddenBall;
+  passes::ReflectionSettings searched;  // at this size the planner would ray-cast the sphere
+  searched.rayCastPixels = 0;
+  passes::ReflectionSettings all = searched;
+  all.plan = passes::PlanScope::Everything;
+  scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+  for (int frame = 0; frame < 3; ++frame) {
+    if (frame == 2) pose.objectToWorld[hiddenBall][3] = glm::vec4(-1.2f, -0.7f, 0.3f, 1.0f);  // beside the sphere
+    auto withPlan = (*planned)->render(pose, kWidth, kHeight, searched);
+    auto withoutPlan = (*everything)->render(pose, kWidth, kHeight, all);
+    ASSERT_TRUE(withPlan && withoutPlan);
+    EXPECT_EQ(withPlan->plan[0].culledObjects, frame < 2 ? 1u : 0u) << "frame " << frame;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < withPlan->rgba.size(); i += 4)
+      for (std::size_t c = 0; c < 3; ++c)
+        if (std::abs(withPlan->rgba[i + c] - withoutPlan->rgba[i + c]) > 2) {
+          ++differing;
+          break;
+        }
+    EXPECT_LE(differing, 2u) << "frame " << frame;
+  }
 }

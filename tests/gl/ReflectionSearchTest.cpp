@@ -22,6 +22,7 @@ using specula::bench::measureReflectionPoints;
 using specula::bench::toPixels;
 using specula::testing::makeRig;
 using specula::testing::Rig;
+using specula::testing::virtualObjects;
 
 
 class SearchAccuracyTest : public ::testing::TestWithParam<const char*> {};
@@ -32,7 +33,7 @@ TEST_P(SearchAccuracyTest, ReflectionPointsAgreeWithTheExactSphereSolver) {
   Rig rig = makeRig(GetParam());
   for (double t : {0.0, 0.5}) {
     const scene::ScenePose pose = scene::ScenePose::at(rig.renderer->scene(), t);
-    auto frame = rig.renderer->render(pose, 640, 480);
+    auto frame = rig.renderer->render(pose, 640, 480, virtualObjects());
     ASSERT_TRUE(frame) << frame.error();
     const auto errors = measureReflectionPoints(*rig.renderer, pose, *frame);
     ASSERT_GT(errors.pixels.size(), 2u);
@@ -61,7 +62,7 @@ TEST(ReflectionSearch, GlslVirtualVertexMatchesItsCppTwinOnTheSameInputs) {
   ASSERT_TRUE(rig.renderer);
   const scene::Scene& scene = rig.renderer->scene();
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  ASSERT_TRUE(rig.renderer->render(pose, 320, 240));
+  ASSERT_TRUE(rig.renderer->render(pose, 320, 240, virtualObjects()));
   const auto results = rig.renderer->readReflectedVertices();
   const passes::ReflectionSlotRange& range = rig.renderer->reflectionSlots().mirrors[0].reflected[0];
   const scene::Mesh& mesh = scene.meshes[scene.objects[range.object].mesh];
@@ -86,7 +87,7 @@ TEST(ReflectionSearch, HiddenVerticesAreFlaggedAndStillGetAFiniteVirtualPosition
   Rig rig = makeRig("checker-sphere");
   ASSERT_TRUE(rig.renderer);
   const scene::ScenePose pose = scene::ScenePose::at(rig.renderer->scene(), 0.0);
-  auto frame = rig.renderer->render(pose, 320, 240);
+  auto frame = rig.renderer->render(pose, 320, 240, virtualObjects());
   ASSERT_TRUE(frame);
   EXPECT_GT(frame->search.hidden, 0u) << "the floor behind the sphere is region C";
   const scene::Scene& scene = rig.renderer->scene();
@@ -118,14 +119,14 @@ TEST(ReflectionSearch, CoherenceMakesTheNextFrameCheapAndResetStartsCold) {
   Rig rig = makeRig("checker-sphere");
   ASSERT_TRUE(rig.renderer);
   const scene::ScenePose pose = scene::ScenePose::at(rig.renderer->scene(), 0.0);
-  auto cold = rig.renderer->render(pose, 640, 480);
-  auto warm = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), 1.0 / 60.0), 640, 480);
+  auto cold = rig.renderer->render(pose, 640, 480, virtualObjects());
+  auto warm = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), 1.0 / 60.0), 640, 480, virtualObjects());
   ASSERT_TRUE(cold && warm);
   EXPECT_EQ(cold->search.coldStarts, cold->search.searched);
   EXPECT_EQ(warm->search.coldStarts, 0u);
   EXPECT_LE(static_cast<double>(warm->search.totalSteps) / warm->search.searched, 5.0);
   rig.renderer->resetCoherence();
-  auto reset = rig.renderer->render(pose, 640, 480);
+  auto reset = rig.renderer->render(pose, 640, 480, virtualObjects());
   ASSERT_TRUE(reset);
   EXPECT_EQ(reset->search.coldStarts, reset->search.searched);
 }
@@ -135,7 +136,7 @@ TEST(ReflectionSearch, ColdStartsClimbThePyramidInFewStepsAt1280x720) {
   ASSERT_TRUE(rig.renderer);
   passes::ReflectionSettings settings;
   settings.coherence = false;
-  auto frame = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), 0.0), 1280, 720, settings);
+  auto frame = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), 0.0), 1280, 720, virtualObjects(settings));
   ASSERT_TRUE(frame);
   EXPECT_EQ(frame->search.coldStarts, frame->search.searched);
   // A naive walk from the mirror centre needs ~110 windows here (issue #3); the pyramid about 20.
@@ -151,7 +152,7 @@ TEST(ReflectionSearch, PartlyVisibleMirrorReflectsCorrectlyAtTheScreenEdge) {
   const glm::vec3 right = glm::normalize(glm::cross(toSphere, pose.camera.up));
   const float halfWidth = 0.95f * std::atan(std::tan(glm::radians(pose.camera.fovYDegrees) / 2.0f) * 640.0f / 480.0f);
   pose.camera.target = pose.camera.eye + std::cos(halfWidth) * toSphere + std::sin(halfWidth) * right;
-  auto frame = rig.renderer->render(pose, 640, 480);
+  auto frame = rig.renderer->render(pose, 640, 480, virtualObjects());
   ASSERT_TRUE(frame);
   const glm::dvec2 center = toPixels(frame->view, glm::vec3(0.0f), 640, 480);
   ASSERT_TRUE(center.x > -5.0 && center.x < 40.0) << "the test needs the mirror cut by the left edge, centre at " << center.x;
@@ -177,7 +178,7 @@ PathJumps trackVirtualVertices(render::Renderer& renderer, double framesPerSecon
   passes::FrameView previousView;
   for (int step = 0; step < frames; ++step) {
     const scene::ScenePose pose = scene::ScenePose::at(renderer.scene(), step / framesPerSecond);
-    auto frame = renderer.render(pose, 640, 480);
+    auto frame = renderer.render(pose, 640, 480, virtualObjects());
     EXPECT_TRUE(frame);
     if (!frame) return jumps;
     const auto current = renderer.readReflectedVertices();
@@ -239,7 +240,7 @@ TEST(ReflectionSearch, CheckerSphereFrameAgreesWithTheRayTracedReference) {
   Rig rig = makeRig("checker-sphere");
   ASSERT_TRUE(rig.renderer);
   const scene::ScenePose pose = scene::ScenePose::at(rig.renderer->scene(), 0.0);
-  auto frame = rig.renderer->render(pose, 320, 240);
+  auto frame = rig.renderer->render(pose, 320, 240, virtualObjects());
   ASSERT_TRUE(frame);
   auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(rig.renderer->scene()));
   ASSERT_TRUE(tracer) << tracer.error();
@@ -265,7 +266,7 @@ TEST(ReflectionSearch, SeveralMovingMirrorsAreSearchedEveryFrame) {
   Rig rig = makeRig("ants");
   ASSERT_TRUE(rig.renderer);
   for (double t : {0.0, 0.25, 0.5}) {
-    auto frame = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), t), 320, 240);
+    auto frame = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), t), 320, 240, virtualObjects());
     ASSERT_TRUE(frame);
     EXPECT_GE(frame->drawnMirrors.size(), 2u);
     EXPECT_EQ(frame->search.unsolved, 0u);

@@ -11,6 +11,13 @@
 
 namespace specula::testing {
 
+// Default settings, but every visible mirror is searched and drawn as virtual objects: the planner
+// would ray-cast a mirror this small on screen, and these tests are about the search.
+inline passes::ReflectionSettings virtualObjects(passes::ReflectionSettings settings = {}) {
+  settings.rayCastPixels = 0;
+  return settings;
+}
+
 struct Rig {
   std::unique_ptr<gl::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;

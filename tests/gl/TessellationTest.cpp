@@ -52,7 +52,7 @@ passes::ReflectionSettings tessellation(TessellationMode mode, TessellationMetri
 }
 
 render::RenderedFrame renderFrame(Rig& rig, const passes::ReflectionSettings& settings, int width = 320, int height = 240) {
-  auto frame = rig.renderer->render(rig.pose, width, height, settings);
+  auto frame = rig.renderer->render(rig.pose, width, height, specula::testing::virtualObjects(settings));
   EXPECT_TRUE(frame) << frame.error();
   return frame ? std::move(frame.value()) : render::RenderedFrame{};
 }

@@ -36,7 +36,7 @@ TEST(FramePlan, VisibleMirrorRunsTheReflectionPassesForEveryOtherReflectedObject
   EXPECT_EQ(slots.mirrors[0].reflected.size(), 1u) << "the sphere reflects the floor, not itself";
   EXPECT_EQ(slots.slotCount, scene.meshes[scene.objects[slots.mirrors[0].reflected[0].object].mesh].vertices.size());
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, {});
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), {});
   EXPECT_EQ(plan.passes, kReflectionPasses);
   EXPECT_TRUE(plan.tessellate);
   ASSERT_EQ(plan.mirrors.size(), 1u);
@@ -50,7 +50,7 @@ TEST(FramePlan, TessellationOffOrAtLevelZeroRunsNoTessellationPass) {
     passes::ReflectionSettings settings;
     settings.tessellation.mode = mode;
     settings.tessellation.maxLevel = level;
-    const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings);
+    const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
     EXPECT_FALSE(plan.tessellate);
     EXPECT_EQ(std::count(plan.passes.begin(), plan.passes.end(), "tessellation"), 0);
     EXPECT_EQ(plan.passes.back(), "virtual-objects");
@@ -62,7 +62,7 @@ TEST(FramePlan, MirrorOutOfViewRunsOnlyTheScenePass) {
   const auto slots = passes::ReflectionSlots::forScene(scene);
   scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   pose.camera = {{0.0f, 2.0f, 5.0f}, {0.0f, 2.0f, 10.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};  // looking away
-  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, {});
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), {});
   EXPECT_EQ(plan.passes, std::vector<std::string_view>{"scene"});
   EXPECT_TRUE(plan.mirrors.empty());
 }
@@ -73,7 +73,7 @@ TEST(FramePlan, MethodNoneRunsOnlyTheScenePass) {
   passes::ReflectionSettings settings;
   settings.method = passes::ReflectionMethod::None;
   const passes::FramePlan plan = passes::planFrame(passes::ReflectionSlots::forScene(scene), pose, worldBounds(scene, pose),
-                                                   4.0f / 3.0f, settings);
+                                                   glm::ivec2(640, 480), settings);
   EXPECT_EQ(plan.passes, std::vector<std::string_view>{"scene"});
 }
 
@@ -86,7 +86,7 @@ TEST(FramePlan, OnlyVisibleMirrorsOfSeveralAreSearched) {
   // Aim a narrow camera at one eye: the other seven are outside the frustum.
   const glm::vec3 eye = bounds[slots.mirrors[0].mirrorObject].center();
   pose.camera = {eye + glm::vec3(0.0f, 0.05f, 0.3f), eye, {0.0f, 1.0f, 0.0f}, 2.0f};
-  const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, 1.0f, {});
+  const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, glm::ivec2(480, 480), {});
   ASSERT_FALSE(plan.mirrors.empty());
   EXPECT_LT(plan.mirrors.size(), 8u);
   EXPECT_EQ(plan.mirrors[0].slots->mirrorObject, slots.mirrors[0].mirrorObject);
@@ -101,7 +101,7 @@ TEST(FramePlan, ObjectsMarkedNotReflectedGetNoSlots) {
   EXPECT_TRUE(slots.mirrors[0].reflected.empty());
   EXPECT_EQ(slots.slotCount, 0u);
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), 1.0f, {}).passes,
+  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(480, 480), {}).passes,
             std::vector<std::string_view>{"scene"});
 }
 
@@ -126,7 +126,7 @@ TEST(FramePlan, TheEnvironmentMapBaselineRunsNoSearchPyramidOrTessellation) {
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.method = passes::ReflectionMethod::EnvironmentMap;
-  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings);
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
   EXPECT_EQ(plan.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "environment-map"}));
   EXPECT_FALSE(plan.tessellate);
   EXPECT_EQ(plan.mirrors.size(), 1u);
@@ -149,12 +149,73 @@ TEST(FramePlan, HalfFloatGBuffersAreKeptOnlyForMirrorsNearTheOrigin) {
   scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.gbufferPrecision = passes::GBufferPrecision::Float16;
-  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings).gbufferPrecision,
+  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings).gbufferPrecision,
             passes::GBufferPrecision::Float16);
   const glm::vec3 far(5000.0f, 0.0f, 0.0f);  // the whole scene and camera moved away from the origin
   for (glm::mat4& objectToWorld : pose.objectToWorld) objectToWorld = glm::translate(glm::mat4(1.0f), far) * objectToWorld;
   pose.camera.eye += far;
   pose.camera.target += far;
-  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), 4.0f / 3.0f, settings).gbufferPrecision,
+  EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings).gbufferPrecision,
             passes::GBufferPrecision::Float32);
+}
+
+TEST(FramePlan, AMirrorCoveringFewPixelsIsRayCastAndNeedsNoSearchPasses) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  const auto bounds = worldBounds(scene, pose);
+  const double large = passes::projectedPixels(bounds[slots.mirrors[0].mirrorObject], pose.camera, {640, 480});
+  const double small = passes::projectedPixels(bounds[slots.mirrors[0].mirrorObject], pose.camera, {64, 48});
+  EXPECT_NEAR(small * 100.0, large, 1e-6 * large) << "pixels scale with the frame's area";
+  EXPECT_GT(large, 16384.0);
+
+  const passes::FramePlan searched = passes::planFrame(slots, pose, bounds, {640, 480}, {});
+  ASSERT_EQ(searched.mirrors.size(), 1u);
+  EXPECT_EQ(searched.mirrors[0].method, passes::PartMethod::VirtualObjects);
+  const passes::FramePlan rayCast = passes::planFrame(slots, pose, bounds, {64, 48}, {});
+  ASSERT_EQ(rayCast.mirrors.size(), 1u);
+  EXPECT_EQ(rayCast.mirrors[0].method, passes::PartMethod::RayCast);
+  EXPECT_EQ(rayCast.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects"}));
+  EXPECT_FALSE(rayCast.tessellate);
+
+  passes::ReflectionSettings never;
+  never.rayCastPixels = 0;
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, never).mirrors[0].method, passes::PartMethod::VirtualObjects);
+  passes::ReflectionSettings everything;
+  everything.plan = passes::PlanScope::Everything;
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, everything).mirrors[0].method, passes::PartMethod::VirtualObjects);
+
+  // The eye inside the mirror's bounds: it may fill the frame.
+  math::Camera inside = pose.camera;
+  inside.eye = bounds[slots.mirrors[0].mirrorObject].center();
+  inside.target = inside.eye + glm::vec3(0.0f, 0.0f, -1.0f);
+  EXPECT_EQ(passes::projectedPixels(bounds[slots.mirrors[0].mirrorObject], inside, {64, 48}), 64.0 * 48.0);
+}
+
+TEST(FramePlan, TheSameViewGivesTheSamePlan) {
+  const scene::Scene scene = *scene::makeBuiltinScene("ants");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 2.5);
+  const auto bounds = worldBounds(scene, pose);
+  const passes::FramePlan first = passes::planFrame(slots, pose, bounds, {640, 480}, {});
+  const passes::FramePlan second = passes::planFrame(slots, pose, bounds, {640, 480}, {});
+  EXPECT_EQ(first.passes, second.passes);
+  ASSERT_EQ(first.mirrors.size(), second.mirrors.size());
+  for (std::size_t i = 0; i < first.mirrors.size(); ++i) {
+    EXPECT_EQ(first.mirrors[i].slots, second.mirrors[i].slots);
+    EXPECT_EQ(first.mirrors[i].method, second.mirrors[i].method);
+    EXPECT_EQ(first.mirrors[i].reflected, second.mirrors[i].reflected);
+    EXPECT_EQ(first.mirrors[i].culledVertices, second.mirrors[i].culledVertices);
+  }
+}
+
+TEST(FramePlan, ARayCastBoundOutOfRangeIsRefusedByName) {
+  passes::ReflectionSettings settings;
+  settings.rayCastPixels = -1;
+  ASSERT_TRUE(passes::reflectionSettingsProblem(settings));
+  EXPECT_NE(passes::reflectionSettingsProblem(settings)->find("ray-cast pixel bound"), std::string::npos);
+  settings.rayCastPixels = passes::kMaxRayCastPixels + 1;
+  EXPECT_TRUE(passes::reflectionSettingsProblem(settings));
+  settings.rayCastPixels = 0;
+  EXPECT_FALSE(passes::reflectionSettingsProblem(settings));
 }

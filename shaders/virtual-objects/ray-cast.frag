@@ -1,9 +1,10 @@
 #version 430 core
-// Where a mirror part's reflected ray meets the mirror itself (a bowl's inside reflecting its far
-// wall), the mirror shows its own shaded colour at the depth of that reflection, like a virtual
-// object: nearer virtual objects still win, and what lies behind the mirror in its own reflection
-// stays hidden. The ray is cast per pixel from the G-buffer point against the mirror's own mesh,
-// as the ray tracer does with one bounce.
+// One object seen in a mirror part by casting each pixel's reflected ray (from the G-buffer point,
+// as the ray tracer does with one bounce) against the object's mesh through its hierarchy, and
+// keeping the nearest hit, shaded there at the depth of that reflection like a virtual object.
+// Serves two cases: the mirror meeting itself (a bowl's inside reflecting its far wall: it shows its
+// own colour there, and what lies behind it in its own reflection stays hidden), and the objects of
+// a part the frame plan ray-casts instead of searching (a mirror covering few pixels).
 #include "common/clip-depth.glsl"
 #include "common/gbuffer-texel.glsl"
 #include "common/shading.glsl"
@@ -18,7 +19,7 @@ uniform mat4 worldToObject;
 uniform mat3 normalToWorld;
 uniform mat4 worldToClip;     // the virtual objects' projection (far plane pushed out)
 uniform float minDistance;    // object space: nearer hits are the surface the ray starts on
-uniform float reflectivity;
+uniform float reflectivity;  // the mirror's
 
 layout(std430, binding = 6) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats

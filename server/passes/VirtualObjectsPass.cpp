@@ -1,5 +1,6 @@
 #include "passes/VirtualObjectsPass.h"
 
+#include <limits>
 
 #include "math/Transform.h"
 #include "passes/ReflectionResources.h"
@@ -146,12 +147,32 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setSceneLighting(*objects, frame.scene);
   }
 
+  // Every draw below touches one mirror's pixels only: scissored to its parts' screen rectangle, a
+  // frame of many small mirrors does not test the whole frame's stencil once per mirror.
+  gl.Enable(GL_SCISSOR_TEST);
+  const auto scissorToMirror = [&](std::size_t mirrorObject) {
+    glm::vec4 rect(std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
+                   std::numeric_limits<float>::lowest());
+    for (const PlannedMirror& part : frame.plan.mirrors) {
+      if (part.slots->mirrorObject != mirrorObject) continue;
+      const glm::vec4 covered = frame.reflections.coveredFramePixels(part.slots->layer);
+      rect = glm::vec4(glm::min(glm::vec2(rect), glm::vec2(covered)), glm::max(glm::vec2(rect.z, rect.w), glm::vec2(covered.z, covered.w)));
+    }
+    const glm::ivec2 size(frame.target.width(), frame.target.height());
+    const glm::ivec2 low = glm::clamp(glm::ivec2(glm::floor(glm::vec2(rect.x, rect.y))), glm::ivec2(0), size);
+    const glm::ivec2 high = glm::clamp(glm::ivec2(glm::ceil(glm::vec2(rect.z, rect.w))), low, size);
+    gl.Scissor(low.x, low.y, high.x - low.x, high.y - low.y);
+  };
+
   // Per mirror: its depth reset to the far plane, then each part's self-reflection and virtual
   // objects; every fragment is an exact hit at its exact depth, so the nearest wins in one pass.
   for (const PlannedMirror& planned : frame.plan.mirrors) {
     const MirrorSlots* mirror = planned.slots;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
-    if (mirror->part == 0) resetMirrorDepth(frame);
+    if (mirror->part == 0) {
+      scissorToMirror(mirror->mirrorObject);
+      resetMirrorDepth(frame);
+    }
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
@@ -161,13 +182,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setForBoth("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
     if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
     if (planned.method == PartMethod::RayCast) {
-      // Only the part's pixels: the ray-cast shader is costly and discards the rest anyway.
-      const glm::vec4 rect = frame.reflections.coveredFramePixels(mirror->layer);
-      gl.Enable(GL_SCISSOR_TEST);
-      const glm::ivec2 low(glm::floor(glm::vec2(rect.x, rect.y))), high(glm::ceil(glm::vec2(rect.z, rect.w)));
-      gl.Scissor(low.x, low.y, std::max(0, high.x - low.x), std::max(0, high.y - low.y));
       for (const ReflectionSlotRange* range : planned.reflected) rayCast(frame, *mirror, range->object);
-      gl.Disable(GL_SCISSOR_TEST);
     } else {
       drawObjects(frame, planned);
     }
@@ -185,14 +200,17 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.ActiveTexture(GL_TEXTURE0);
   composite_.set("reflection", 2);
   gl.BindVertexArray(emptyVertexArray_.id());
+  gl.Enable(GL_SCISSOR_TEST);
   for (const PlannedMirror& planned : frame.plan.mirrors) {
     const MirrorSlots* mirror = planned.slots;
     if (mirror->part != 0) continue;  // once per mirror
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
+    scissorToMirror(mirror->mirrorObject);
     composite_.set("reflectedBackground", reflectivity * frame.scene.background);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
   }
+  gl.Disable(GL_SCISSOR_TEST);
   gl.Disable(GL_BLEND);
   gl.Disable(GL_STENCIL_TEST);
   gl.StencilMask(0xFF);

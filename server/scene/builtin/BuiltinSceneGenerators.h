@@ -11,5 +11,6 @@ Scene ufoScene();
 Scene antsScene();
 Scene quadScene();
 Scene teapotTableScene();
+Scene beadsScene();
 
 }  // namespace specula::scene::builtin

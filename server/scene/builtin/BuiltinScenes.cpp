@@ -30,6 +30,8 @@ constexpr std::array kEntries{
           builtin::quadScene},
     Entry{"teapot-table", "mirror ball beside a coarse tablecloth and candlestick and a fine procedural teapot",
           builtin::teapotTableScene},
+    Entry{"beads", "thirty chrome beads a pixel or two wide on the teapot table (~20k vertices): many tiny mirrors",
+          builtin::beadsScene},
 };
 
 constexpr auto kNames = [] {

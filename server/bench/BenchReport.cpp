@@ -283,7 +283,7 @@ std::string accuracyPlotScript(std::span<const AccuracyRow> rows, const std::str
   script += "set title " + gnuplotString(title) + " noenhanced\n"
             "set xlabel 'frame time, ms (median over the camera path; log scale)'\n"
             "set ylabel 'mirror mismatch against the ray tracer (share of mirror pixels; log scale)'\n"
-            "set logscale xy\nset format x '%g'\nset format y '%g'\nset grid\nset key bottom left box opaque\n";
+            "set logscale xy\nset format x '%g'\nset format y '%g'\nset grid\nset key top right box opaque\n";
   // Room on the right for the labels, a margin elsewhere.
   script += "set xrange [" + power(minX - 0.1) + ":" + power(maxX + 0.45) + "]\nset yrange [" + power(minY - 0.15) + ":" +
             power(maxY + 0.15) + "]\n";

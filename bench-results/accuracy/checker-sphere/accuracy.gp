@@ -31,7 +31,7 @@ set logscale xy
 set format x '%g'
 set format y '%g'
 set grid
-set key bottom left box opaque
+set key top right box opaque
 set xrange [20.948313:1066.394176]
 set yrange [0.000071:0.334045]
 set arrow 1 from 45.630, graph 0 to 45.630, graph 1 nohead dashtype 2 linecolor rgb '#444444'

@@ -35,7 +35,7 @@ set logscale xy
 set format x '%g'
 set format y '%g'
 set grid
-set key bottom left box opaque
+set key top right box opaque
 set xrange [28.459499:1397.312813]
 set yrange [0.000071:0.333767]
 set arrow 1 from 47.487, graph 0 to 47.487, graph 1 nohead dashtype 2 linecolor rgb '#444444'

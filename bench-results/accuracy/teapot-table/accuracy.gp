@@ -31,7 +31,7 @@ set logscale xy
 set format x '%g'
 set format y '%g'
 set grid
-set key bottom left box opaque
+set key top right box opaque
 set xrange [24.541162:3631.840781]
 set yrange [0.000071:0.367405]
 set arrow 1 from 40.314, graph 0 to 40.314, graph 1 nohead dashtype 2 linecolor rgb '#444444'

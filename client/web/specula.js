@@ -344,7 +344,7 @@
     const plan = f.plan || [];
     const sum = (field) => plan.reduce((total, part) => total + Number(part[field] || 0), 0);
     const lines = [
-      `${f.width}×${f.height} ${f.still ? 'still' : 'interactive'} · frame ${f.number} · ${state.frameTimes.length} fps`,
+      `${f.width}×${f.height} ${f.still ? 'still' : 'interactive'}${f.reencoded ? ' (view unchanged: re-encoded, not rendered)' : ''} · frame ${f.number} · ${state.frameTimes.length} fps`,
       `input → frame ${state.latencyMs === null ? '–' : `${state.latencyMs.toFixed(0)} ms`}`,
       `server: render ${ms(f.renderMs)} ms · encode ${ms(f.encodeMs)} ms · input→sent ${ms(f.serverMs)} ms`,
       `passes (GPU ms): ${stages}`,

@@ -11,6 +11,8 @@ struct Camera {
   glm::vec3 target{0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float fovYDegrees = 45.0f;
+
+  bool operator==(const Camera&) const = default;
 };
 
 // Why a camera cannot produce a view (eye on target, up parallel to the view direction,

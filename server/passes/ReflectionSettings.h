@@ -43,6 +43,8 @@ struct TessellationSettings {
   TessellationMetric metric = TessellationMetric::Pixels;
   float threshold = 1.0f;  // an edge splits when its error is at least this (0: always; Angle 1: never)
   int maxLevel = 4;        // splits per original triangle at most: at most 4^maxLevel triangles each
+
+  bool operator==(const TessellationSettings&) const = default;
 };
 
 // "crack-free pixels >= 1 level 4", or "none": how reports name a setting.
@@ -70,6 +72,8 @@ struct ReflectionSettings {
   // ray cast against its reflected objects (exact) instead of searching their every vertex; 0: never.
   int rayCastPixels = 16384;
   TessellationSettings tessellation;
+
+  bool operator==(const ReflectionSettings&) const = default;
 };
 
 // What is out of range in `settings`, naming the setting and its range; nullopt when all is well.

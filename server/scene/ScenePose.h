@@ -14,6 +14,8 @@ struct ScenePose {
   std::vector<glm::mat4> objectToWorld;  // one per Scene::objects entry
   math::Camera camera;
 
+  bool operator==(const ScenePose&) const = default;
+
   static ScenePose at(const Scene& scene, double seconds);
 };
 

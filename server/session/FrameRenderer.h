@@ -19,6 +19,8 @@ struct RenderJob {
   scene::ScenePose pose;
   int width = 0, height = 0;
   passes::ReflectionSettings settings;
+
+  bool operator==(const RenderJob&) const = default;
 };
 
 struct RenderOutput {

@@ -10,7 +10,7 @@ namespace specula::session {
 struct RenderScheduler::EncodeJob {
   std::shared_ptr<Session> session;
   FrameRequest request;
-  RenderOutput output;
+  std::shared_ptr<const RenderOutput> output;
 };
 
 Result<std::unique_ptr<RenderScheduler>> RenderScheduler::start(FrameRendererFactory factory,
@@ -111,15 +111,18 @@ void RenderScheduler::renderLoop(FrameRendererFactory factory) {
     }
     FrameRequest request = chosen->takeFrame(now);
     lock.unlock();
-    auto output = (*renderer)->render(request.job);
-    if (output) {
+    std::shared_ptr<const RenderOutput> picture = request.reuse;
+    if (!picture) {
+      auto output = (*renderer)->render(request.job);
+      if (output) picture = std::make_shared<const RenderOutput>(std::move(*output));
+      else chosen->renderFailed(request, output.error());
+    }
+    if (picture) {
       {
         std::lock_guard encodeLock(encodeMutex_);
-        encodeQueue_.push_back({chosen, std::move(request), std::move(*output)});
+        encodeQueue_.push_back({chosen, std::move(request), std::move(picture)});
       }
       encodeReady_.notify_one();
-    } else {
-      chosen->renderFailed(request, output.error());
     }
     chosen.reset();
     lock.lock();
@@ -140,13 +143,13 @@ void RenderScheduler::encodeLoop() {
       encodeQueue_.pop_front();
     }
     const Clock::time_point start = Clock::now();
-    auto jpeg = encoder.encode({job.output.rgba.data(), job.output.width, job.output.height}, job.request.jpegQuality);
+    auto jpeg = encoder.encode({job.output->rgba.data(), job.output->width, job.output->height}, job.request.jpegQuality);
     const double encodeMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     if (!jpeg) {
       job.session->renderFailed(job.request, jpeg.error());
       continue;
     }
-    job.session->deliver(job.request, job.output, std::string(jpeg->begin(), jpeg->end()), encodeMs);
+    job.session->deliver(job.request, std::move(job.output), std::string(jpeg->begin(), jpeg->end()), encodeMs);
   }
 }
 

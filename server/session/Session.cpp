@@ -393,6 +393,7 @@ FrameRequest Session::takeFrame(Clock::time_point now) {
   if (state_.camera) request.job.pose.camera = *state_.camera;
   std::tie(request.job.width, request.job.height) = state_.renderSize();
   request.job.settings = state_.settings.reflection;
+  if (request.still && lastOutput_ && lastJob_ == request.job) request.reuse = lastOutput_;
   dirty_ = false;
   busy_ = true;
   lastFrameStill_ = request.still;
@@ -401,7 +402,9 @@ FrameRequest Session::takeFrame(Clock::time_point now) {
   return request;
 }
 
-void Session::deliver(const FrameRequest& request, const RenderOutput& output, std::string jpeg, double encodeMs) {
+void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> rendered, std::string jpeg, double encodeMs) {
+  const RenderOutput& output = *rendered;
+  const bool reencoded = request.reuse != nullptr;
   const Clock::time_point now = Clock::now();
   v1::ServerMessage message;
   v1::Frame& frame = *message.mutable_frame();
@@ -411,12 +414,15 @@ void Session::deliver(const FrameRequest& request, const RenderOutput& output, s
   frame.set_width(static_cast<std::uint32_t>(output.width));
   frame.set_height(static_cast<std::uint32_t>(output.height));
   frame.set_still(request.still);
-  for (const auto& [name, ms] : output.stageMs) {
-    v1::StageTime& stage = *frame.add_stages();
-    stage.set_name(name);
-    stage.set_ms(ms);
+  frame.set_reencoded(reencoded);
+  if (!reencoded) {  // a re-encoded frame ran no pass
+    for (const auto& [name, ms] : output.stageMs) {
+      v1::StageTime& stage = *frame.add_stages();
+      stage.set_name(name);
+      stage.set_ms(ms);
+    }
+    frame.set_render_ms(output.renderMs);
   }
-  frame.set_render_ms(output.renderMs);
   frame.set_encode_ms(encodeMs);
   const double serverMs = millisecondsBetween(request.inputArrival, now);
   frame.set_server_ms(serverMs);
@@ -430,12 +436,14 @@ void Session::deliver(const FrameRequest& request, const RenderOutput& output, s
   {
     std::lock_guard lock(mutex_);
     busy_ = false;
+    lastJob_ = request.job;
+    lastOutput_ = std::move(rendered);
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
     sink = sink_;
   }
   ServiceMetrics& metrics = hub_.metrics();
-  metrics.renderMs.observe(output.renderMs);
+  if (!reencoded) metrics.renderMs.observe(output.renderMs);
   metrics.encodeMs.observe(encodeMs);
   metrics.latencyMs.observe(serverMs);
   if (sink) {

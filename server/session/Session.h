@@ -24,6 +24,9 @@ struct FrameRequest {
   double clientTimeMs = 0.0;
   Clock::time_point inputArrival{};
   double sceneMs = 0.0;
+  // Set on a still frame whose job is the last one rendered (a paused view after input): the
+  // picture is that render's, only encoded again at still quality.
+  std::shared_ptr<const RenderOutput> reuse;
 };
 
 class Session : public net::ConnectionHandler, public std::enable_shared_from_this<Session> {
@@ -45,7 +48,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   };
   Due due(Clock::time_point now) const;
   FrameRequest takeFrame(Clock::time_point now);
-  void deliver(const FrameRequest& request, const RenderOutput& output, std::string jpeg, double encodeMs);
+  void deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> output, std::string jpeg, double encodeMs);
   void renderFailed(const FrameRequest& request, const std::string& message);
 
  private:
@@ -74,6 +77,8 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   bool dirty_ = false;        // something changed since the last frame started
   bool busy_ = false;         // a frame is being rendered or encoded
   bool lastFrameStill_ = true;
+  std::optional<RenderJob> lastJob_;                  // the last frame delivered and the render it showed
+  std::shared_ptr<const RenderOutput> lastOutput_;
   bool renderBroken_ = false;  // the last render failed: wait for new input before retrying
   Clock::time_point lastInputAt_{};
   Clock::time_point lastFrameStart_{};

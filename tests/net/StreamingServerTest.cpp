@@ -88,10 +88,19 @@ TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneFullQualityStill) {
   auto interactive = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
   ASSERT_TRUE(interactive);
   EXPECT_FALSE(interactive->frame().still());
+  EXPECT_FALSE(interactive->frame().reencoded());
+  const int rendersAfterInteractive = rig.renders.load();
   auto still = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
   ASSERT_TRUE(still) << "a still frame follows once input stops";
   EXPECT_EQ(still->frame().input_sequence(), 1u);
+  // The view did not change since the interactive frame (paused, same camera and settings): the
+  // still is that render encoded again at full quality, not a second render.
+  EXPECT_TRUE(still->frame().reencoded());
+  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive);
+  EXPECT_EQ(still->frame().stages_size(), 0) << "no pass ran for it";
+  EXPECT_NEAR(meanGrey(still->frame()), FakeRenderer::eyeColour({1, 1, 6}), 3.0) << "it shows the interactive frame's view";
   EXPECT_FALSE(receiveUntil(*client, isFrame, 400ms)) << "a still scene sends nothing more";
+  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive) << "a paused, unchanged view is not rendered again";
 }
 
 TEST_P(StreamingServer, AnimationPlaysPausesAndSeeks) {

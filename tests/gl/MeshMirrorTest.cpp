@@ -13,8 +13,6 @@
 #include "bench/ReflectionAccuracy.h"
 #include "encode/PngEncoder.h"
 #include "gl/GlContext.h"
-#include "reference/ImageMetrics.h"
-#include "reference/RayTracer.h"
 #include "SceneRig.h"
 #include "render/Renderer.h"
 #include "scene/Primitives.h"
@@ -49,29 +47,17 @@ void saveForLooking(const std::vector<std::uint8_t>& rgba, const std::string& su
 Comparison compare(const std::shared_ptr<const scene::Scene>& scene, const scene::ScenePose& pose,
                    const std::shared_ptr<const scene::Scene>& truth = nullptr) {
   Comparison result;
-  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
-  EXPECT_TRUE(context) << context.error();
-  if (!context) return result;
-  auto renderer = render::Renderer::create(**context, scene);
-  EXPECT_TRUE(renderer) << renderer.error();
-  if (!renderer) return result;
+  specula::testing::Rig rig = specula::testing::makeRig(scene);
+  if (!rig.renderer) return result;
   // The general path under test: every mirror searched, however small on screen.
-  auto frame = (*renderer)->render(pose, kWidth, kHeight, specula::testing::virtualObjects());
+  auto frame = rig.renderer->render(pose, kWidth, kHeight, specula::testing::virtualObjects());
   EXPECT_TRUE(frame) << frame.error();
-  auto tracer = reference::RayTracer::create(truth ? truth : scene);
-  EXPECT_TRUE(tracer) << tracer.error();
-  if (!frame || !tracer) return result;
-  auto reference = (*tracer)->render(pose, {kWidth, kHeight});
-  EXPECT_TRUE(reference) << reference.error();
-  if (!reference) return result;
-  auto mismatch = reference::maskedMismatch({frame->rgba, kWidth, kHeight}, {reference->rgba, kWidth, kHeight},
-                                            reference->mirrorMask);
-  EXPECT_TRUE(mismatch) << mismatch.error();
-  if (!mismatch) return result;
+  if (!frame) return result;
+  specula::testing::MirrorMismatch mismatch = specula::testing::mismatchAgainstRayTracer(truth ? truth : scene, pose, *frame);
   saveForLooking(frame->rgba, "search");
-  saveForLooking(reference->rgba, "raytrace");
-  result.mismatch = mismatch->share();
-  result.mirrorPixels = mismatch->inside;
+  if (!mismatch.reference.empty()) saveForLooking(mismatch.reference, "raytrace");
+  result.mismatch = mismatch.share;
+  result.mirrorPixels = mismatch.mirrorPixels;
   result.frame = std::move(*frame);
   return result;
 }

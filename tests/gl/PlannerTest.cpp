@@ -9,12 +9,11 @@
 #include <string>
 
 #include "gl/GlContext.h"
-#include "reference/ImageMetrics.h"
-#include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "scene/SceneLoader.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
+#include "SceneRig.h"
 
 using namespace specula;
 
@@ -36,18 +35,15 @@ struct PlannedAndEverything {
 // The same pose rendered with the planner and without, each from cold seeds.
 PlannedAndEverything renderBoth(const std::shared_ptr<const scene::Scene>& scene) {
   PlannedAndEverything result;
-  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
-  EXPECT_TRUE(context) << context.error();
-  if (!context) return result;
-  auto renderer = render::Renderer::create(**context, scene);
-  EXPECT_TRUE(renderer) << renderer.error();
-  if (!renderer) return result;
+  specula::testing::Rig rig = specula::testing::makeRig(scene);
+  if (!rig.renderer) return result;
+  render::Renderer* renderer = rig.renderer.get();
   const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
   for (auto [scope, frame] : {std::pair{passes::PlanScope::Needed, &result.needed}, {passes::PlanScope::Everything, &result.everything}}) {
     passes::ReflectionSettings settings;
     settings.plan = scope;
-    (*renderer)->resetCoherence();
-    auto rendered = (*renderer)->render(pose, kWidth, kHeight, settings);
+    renderer->resetCoherence();
+    auto rendered = renderer->render(pose, kWidth, kHeight, settings);
     EXPECT_TRUE(rendered) << rendered.error();
     if (!rendered) return result;
     *frame = std::move(*rendered);
@@ -147,37 +143,13 @@ TEST(Planner, FlatPartsLeaveOutWhatIsBehindThemAndPartsFacingAwaySearchNothing) 
   EXPECT_LT(2 * frames.needed.search.searched, frames.everything.search.searched);
   EXPECT_LE(frames.differingPixels, 2u);
 
-  auto tracer = reference::RayTracer::create(scene);
-  ASSERT_TRUE(tracer) << tracer.error();
-  auto reference = (*tracer)->render(scene::ScenePose::at(*scene, 0.0), {kWidth, kHeight});
-  ASSERT_TRUE(reference) << reference.error();
-  auto mismatch = reference::maskedMismatch({frames.needed.rgba, kWidth, kHeight}, {reference->rgba, kWidth, kHeight},
-                                            reference->mirrorMask);
-  ASSERT_TRUE(mismatch) << mismatch.error();
-  EXPECT_GT(mismatch->inside, 10000u);
+  const specula::testing::MirrorMismatch mismatch =
+      specula::testing::mismatchAgainstRayTracer(scene, scene::ScenePose::at(*scene, 0.0), frames.needed);
+  EXPECT_GT(mismatch.mirrorPixels, 10000u);
   std::printf("mirror cube, planned: %.2f %% of %zu mirror pixels differ from the ray tracer; %u searches against %u\n",
-              100.0 * mismatch->share(), mismatch->inside, frames.needed.search.searched, frames.everything.search.searched);
-  EXPECT_LE(mismatch->share(), 0.01) << "the planned frame against the ray tracer";
+              100.0 * mismatch.share, mismatch.mirrorPixels, frames.needed.search.searched, frames.everything.search.searched);
+  EXPECT_LE(mismatch.share, 0.01) << "the planned frame against the ray tracer";
 }
-
-namespace {
-
-// Share of the ray tracer's mirror pixels the frame gets strongly wrong.
-double mismatchAgainstTheRayTracer(const std::shared_ptr<const scene::Scene>& scene, const scene::ScenePose& pose,
-                                   const render::RenderedFrame& frame) {
-  auto tracer = reference::RayTracer::create(scene);
-  EXPECT_TRUE(tracer) << tracer.error();
-  if (!tracer) return 1.0;
-  auto reference = (*tracer)->render(pose, {frame.width, frame.height});
-  EXPECT_TRUE(reference) << reference.error();
-  if (!reference) return 1.0;
-  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height}, {reference->rgba, frame.width, frame.height},
-                                            reference->mirrorMask);
-  EXPECT_TRUE(mismatch) << mismatch.error();
-  return mismatch ? mismatch->share() : 1.0;
-}
-
-}  // namespace
 
 // The ants' eyes and the kitchen bowl cover a few hundred to a few thousand pixels while reflecting
 // tens of thousands of vertices: the planner casts their pixels' rays instead, which is exact.
@@ -197,7 +169,7 @@ TEST(Planner, MirrorsCoveringFewPixelsAreRayCastAndMatchTheRayTracer) {
       EXPECT_LE(part.projectedPixels, passes::ReflectionSettings{}.rayCastPixels);
     }
     EXPECT_EQ(frame->search.searched, 0u) << name << ": nothing searched";
-    const double mismatch = mismatchAgainstTheRayTracer(scene, pose, *frame);
+    const double mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame).share;
     std::printf("%s ray-cast: %.2f %% of its mirror pixels differ from the ray tracer\n", name, 100.0 * mismatch);
     EXPECT_LE(mismatch, 0.005) << name;
 

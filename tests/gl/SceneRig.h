@@ -1,11 +1,16 @@
 #pragma once
-// A GL context and a renderer for one built-in scene, as the GL tests use them.
+// A GL context and a renderer for one scene, and the frame against the ray tracer, as the GL
+// tests use them.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "gl/GlContext.h"
+#include "reference/ImageMetrics.h"
+#include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "scene/builtin/BuiltinScenes.h"
 
@@ -24,14 +29,41 @@ struct Rig {
 };
 
 // Fails the calling test (not fatally) and returns an empty rig when GL or the scene cannot start.
-inline Rig makeRig(const std::string& sceneName) {
+inline Rig makeRig(std::shared_ptr<const scene::Scene> scene) {
   auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
   EXPECT_TRUE(context) << context.error();
   if (!context) return {};
-  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName)));
+  auto renderer = render::Renderer::create(**context, std::move(scene));
   EXPECT_TRUE(renderer) << renderer.error();
   if (!renderer) return {};
   return {std::move(context.value()), std::move(renderer.value())};
+}
+
+inline Rig makeRig(const std::string& sceneName) {
+  return makeRig(std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName)));
+}
+
+struct MirrorMismatch {
+  double share = 1.0;  // of the reference's mirror pixels, those the frame gets strongly wrong
+  std::size_t mirrorPixels = 0;
+  std::vector<std::uint8_t> reference;  // the ray tracer's image, to look at
+};
+
+// The frame against the ray tracer's image of `truth` at the same pose (and size).
+inline MirrorMismatch mismatchAgainstRayTracer(const std::shared_ptr<const scene::Scene>& truth, const scene::ScenePose& pose,
+                                               const render::RenderedFrame& frame) {
+  MirrorMismatch result;
+  auto tracer = reference::RayTracer::create(truth);
+  EXPECT_TRUE(tracer) << tracer.error();
+  if (!tracer) return result;
+  auto reference = (*tracer)->render(pose, {frame.width, frame.height});
+  EXPECT_TRUE(reference) << reference.error();
+  if (!reference) return result;
+  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height},
+                                            {reference->rgba, frame.width, frame.height}, reference->mirrorMask);
+  EXPECT_TRUE(mismatch) << mismatch.error();
+  if (!mismatch) return result;
+  return {mismatch->share(), mismatch->inside, std::move(reference->rgba)};
 }
 
 }  // namespace specula::testing

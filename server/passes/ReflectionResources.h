@@ -63,8 +63,8 @@ class ReflectionResources {
   GLuint statistics() const { return statistics_.id(); }
   // The part of each triangle of a mirror's search mesh (bytes, four to a uint), for mirrors of several parts.
   GLuint triangleParts(std::size_t mirrorObject) const { return triangleParts_.at(mirrorObject).id(); }
-  // Set for every mirror with MirrorSlots::seesItself.
-  // Built on first use and kept (meshes do not change; objects move rigidly).
+  // The hierarchy of a mesh (a mirror's own where it sees itself, an object's in a ray-cast part),
+  // built on first use and kept (meshes do not change; objects move rigidly).
   const MeshBvh& meshBvh(std::uint32_t mesh);
   TessellationBuffers& tessellation() { return tessellation_; }
   const TessellationBuffers& tessellation() const { return tessellation_; }

@@ -256,6 +256,7 @@ TEST(StreamingServerInput, OutOfRangeValuesAreRefusedWithAnErrorAndTheSessionGoe
       R"({"camera":{"eye":{"x":1e30,"y":0,"z":0},"target":{},"sequence":3}})",
       R"({"resize":{"width":100000,"height":10}})",
       R"({"settings":{"level":99}})",
+      R"({"settings":{"plan":7}})",
       R"({"settings":{"resolutionScale":"Infinity"}})",
       R"({"animation":{"speed":1000}})",
       R"({"animation":{"overrides":[{"object":"no-such-thing"}]}})",

@@ -1,9 +1,11 @@
 #include "passes/FramePlan.h"
 
-#include "passes/MirrorReach.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include <glm/gtc/constants.hpp>
+
+#include "passes/MirrorReach.h"
 
 namespace specula::passes {
 
@@ -41,7 +43,7 @@ double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, g
   if (distance <= radius) return framePixels;
   const double focal = 0.5 * frameSize.y / std::tan(glm::radians(static_cast<double>(camera.fovYDegrees)) * 0.5);
   const double projectedRadius = focal * std::tan(std::asin(radius / distance));
-  return std::min(framePixels, 3.14159265358979 * projectedRadius * projectedRadius);
+  return std::min(framePixels, glm::pi<double>() * projectedRadius * projectedRadius);
 }
 
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
@@ -56,10 +58,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     if (mirror.reflected.empty()) continue;
     if (!everything && !boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f)) continue;
     const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
-    // A part that faces away stays in the plan (the mirror's other parts share its stencil and
-    // composite) but searches nothing.
     const double pixels = projectedPixels(worldBounds[mirror.mirrorObject], camera, frameSize);
     const bool rayCast = !everything && settings.method == ReflectionMethod::Search && pixels <= settings.rayCastPixels;
+    // A part that faces away stays in the plan (the mirror's other parts share its stencil and
+    // composite) but draws nothing.
     PlannedMirror planned{&mirror, rayCast ? PartMethod::RayCast : PartMethod::VirtualObjects, pixels, {},
                           !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
     for (const ReflectionSlotRange& range : mirror.reflected) {

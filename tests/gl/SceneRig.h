@@ -46,24 +46,30 @@ inline Rig makeRig(const std::string& sceneName) {
 struct MirrorMismatch {
   double share = 1.0;  // of the reference's mirror pixels, those the frame gets strongly wrong
   std::size_t mirrorPixels = 0;
-  std::vector<std::uint8_t> reference;  // the ray tracer's image, to look at
+  std::vector<std::uint8_t> reference;  // the ray tracer's image, to look at (mismatchAgainstRayTracer only)
 };
+
+// The frame against a ray-traced image of the same pose and size (rendered once, compared often).
+inline MirrorMismatch mismatchAgainst(const reference::ReferenceImage& reference, const render::RenderedFrame& frame) {
+  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height},
+                                            {reference.rgba, frame.width, frame.height}, reference.mirrorMask);
+  EXPECT_TRUE(mismatch) << mismatch.error();
+  if (!mismatch) return {};
+  return {mismatch->share(), mismatch->inside, {}};
+}
 
 // The frame against the ray tracer's image of `truth` at the same pose (and size).
 inline MirrorMismatch mismatchAgainstRayTracer(const std::shared_ptr<const scene::Scene>& truth, const scene::ScenePose& pose,
                                                const render::RenderedFrame& frame) {
-  MirrorMismatch result;
   auto tracer = reference::RayTracer::create(truth);
   EXPECT_TRUE(tracer) << tracer.error();
-  if (!tracer) return result;
+  if (!tracer) return {};
   auto reference = (*tracer)->render(pose, {frame.width, frame.height});
   EXPECT_TRUE(reference) << reference.error();
-  if (!reference) return result;
-  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height},
-                                            {reference->rgba, frame.width, frame.height}, reference->mirrorMask);
-  EXPECT_TRUE(mismatch) << mismatch.error();
-  if (!mismatch) return result;
-  return {mismatch->share(), mismatch->inside, std::move(reference->rgba)};
+  if (!reference) return {};
+  MirrorMismatch result = mismatchAgainst(*reference, frame);
+  result.reference = std::move(reference->rgba);
+  return result;
 }
 
 }  // namespace specula::testing

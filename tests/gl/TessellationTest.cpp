@@ -172,15 +172,11 @@ TEST(Tessellation, CheckerSphereMismatchFallsAsTheThresholdFalls) {
   constexpr int kWidth = 640, kHeight = 480;
   const auto truth = referenceImage(rig, kWidth, kHeight);
   ASSERT_TRUE(truth);
-  const reference::RgbaView theirs{truth->rgba, kWidth, kHeight};
   std::vector<double> mismatch;
   std::vector<passes::ReflectionSettings> settings = {tessellation(TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0)};
   for (float threshold : {4.0f, 1.0f, 0.25f}) settings.push_back(tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, threshold, 5));
   for (const passes::ReflectionSettings& setting : settings) {
-    const auto frame = renderFrame(rig, setting, kWidth, kHeight);
-    auto share = reference::maskedMismatch({frame.rgba, kWidth, kHeight}, theirs, truth->mirrorMask);
-    ASSERT_TRUE(share);
-    mismatch.push_back(share->share());
+    mismatch.push_back(specula::testing::mismatchAgainst(*truth, renderFrame(rig, setting, kWidth, kHeight)).share);
   }
   // Measured: 0.069 untessellated, then 0.044, 0.023, 0.008 at 4, 1 and 0.25 px.
   for (std::size_t i = 1; i < mismatch.size(); ++i) EXPECT_LT(mismatch[i], mismatch[i - 1]) << "threshold step " << i;
@@ -225,14 +221,11 @@ TEST(Tessellation, AFrameCappedPartWayStillDrawsEveryPart) {
   constexpr int kWidth = 320, kHeight = 240;
   const auto truth = referenceImage(rig, kWidth, kHeight);
   ASSERT_TRUE(truth);
-  const reference::RgbaView theirs{truth->rgba, kWidth, kHeight};
   std::map<int, double> mismatch;
   for (int level : {2, 3}) {
     const auto frame = renderFrame(rig, tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, 0.0f, level), kWidth, kHeight);
     EXPECT_EQ(frame.tessellation.capped, level == 3) << "level " << level;
-    const auto share = reference::maskedMismatch({frame.rgba, kWidth, kHeight}, theirs, truth->mirrorMask);
-    ASSERT_TRUE(share);
-    mismatch[level] = share->share();
+    mismatch[level] = specula::testing::mismatchAgainst(*truth, frame).share;
   }
   std::printf("kitchen, full tessellation: mismatch %.4f at level 2, %.4f at level 3 (capped)\n", mismatch[2], mismatch[3]);
   EXPECT_LE(mismatch[3], mismatch[2] + 0.002);

@@ -10,7 +10,6 @@ namespace specula::passes {
 
 namespace {
 
-
 // GL's cube faces in order (+x, -x, +y, -y, +z, -z): the direction each looks along and its up
 // vector, which bake in the cube map's left-handed face coordinates.
 struct CubeFace {
@@ -39,7 +38,6 @@ Result<std::unique_ptr<EnvironmentMapPass>> EnvironmentMapPass::create(const gl:
   if (!lookup) return Error{lookup.error()};
   return std::unique_ptr<EnvironmentMapPass>(new EnvironmentMapPass(gl, std::move(capture.value()), std::move(lookup.value())));
 }
-
 
 void EnvironmentMapPass::prepare(const gl::GlApi& gl, int faceSize) {
   if (faceSize == faceSize_) return;

@@ -84,10 +84,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   }
   plan.passes.push_back("mirror-gbuffer");
   // Searching (and so its pyramid and tessellation) only for parts drawn as virtual objects.
-  const bool searched = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
-                                    [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
-  if (searched) plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"});
-  plan.tessellate = searched && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
+  plan.search = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
+                            [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
+  if (plan.search) plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"});
+  plan.tessellate = plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back("tessellation");
   plan.passes.push_back("virtual-objects");
   return plan;

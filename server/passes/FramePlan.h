@@ -31,6 +31,7 @@ struct PlannedMirror {
 struct FramePlan {
   std::vector<std::string_view> passes;         // pass names in execution order
   std::vector<PlannedMirror> mirrors;           // visible mirror parts, a mirror's parts in a row
+  bool search = false;                          // some part is drawn as virtual objects: the search runs
   bool tessellate = false;                      // virtual objects come from the tessellation pass
   // The settings' precision, unless RGBA16F cannot place a visible mirror's texels (far from the origin).
   GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;

@@ -1,6 +1,5 @@
 #include "passes/GBufferPyramidPass.h"
 
-
 namespace specula::passes {
 
 namespace {
@@ -14,7 +13,6 @@ Result<std::unique_ptr<GBufferPyramidPass>> GBufferPyramidPass::create(const gl:
   if (!half) return Error{half.error()};
   return std::unique_ptr<GBufferPyramidPass>(new GBufferPyramidPass(std::move(full.value()), std::move(half.value())));
 }
-
 
 void GBufferPyramidPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

@@ -42,7 +42,6 @@ Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::G
   return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(quadric.value())));
 }
 
-
 void MirrorGBufferPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   ReflectionResources& resources = frame.reflections;

@@ -19,7 +19,6 @@ Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
   return std::unique_ptr<ScenePass>(new ScenePass(gl, std::move(program.value()), std::move(quadric.value())));
 }
 
-
 void ScenePass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   frame.target.bind();

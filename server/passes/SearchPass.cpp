@@ -21,7 +21,6 @@ Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
   return std::unique_ptr<SearchPass>(new SearchPass(std::move(program.value())));
 }
 
-
 void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   gl.ActiveTexture(GL_TEXTURE0);

@@ -1,6 +1,5 @@
 #include "passes/TessellationPass.h"
 
-
 #include "passes/SearchPass.h"
 
 namespace specula::passes {
@@ -30,7 +29,6 @@ Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlA
   return std::unique_ptr<TessellationPass>(
       new TessellationPass(Programs{std::move(*classify), std::move(*dispatch), std::move(*search), std::move(*decide), std::move(*emit)}));
 }
-
 
 void TessellationPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;

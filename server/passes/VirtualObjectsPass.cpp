@@ -31,7 +31,6 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
                                                                     std::move(composite.value())));
 }
 
-
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const {
   frame.setReflectedObject(objects_, range);
   setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material]);

@@ -1,6 +1,5 @@
 #include "render/Renderer.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -141,14 +140,15 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   RenderedFrame result{width, height, target_->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision, {}};
   for (const passes::PlannedMirror& mirror : plan.mirrors) {
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
-    MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part, mirror.slots->kind, mirror.method, mirror.projectedPixels, mirror.facesAway, mirror.reflected.size(), 0,
-                              mirror.culledObjects, mirror.culledVertices};
+    MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part,   mirror.slots->kind,     mirror.method,
+                              mirror.projectedPixels,     mirror.facesAway,     mirror.reflected.size(), 0,
+                              mirror.culledObjects,       mirror.culledVertices};
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }
   mark(marks - 1);
-  // The statistics buffer is reset by the search pass: a frame without it (every mirror ray-cast) searched nothing.
-  if (std::find(plan.passes.begin(), plan.passes.end(), "search") != plan.passes.end()) result.search = reflections_.readStatistics();
+  // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
+  if (plan.search) result.search = reflections_.readStatistics();
   if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();
 
   std::vector<double> times(marks, 0.0);

@@ -58,6 +58,10 @@ std::vector<OptionSpec> planOptions() {
        "needed"},
       {"ray-cast-pixels", "N", "a mirror covering at most N pixels (projected bounds) ray-casts its pixels instead of searching; 0 = never",
        std::to_string(defaults.rayCastPixels)},
+      {"uncovered", "FILL",
+       "ray-cast (a searched mirror's pixels no virtual object covered, towards silhouettes and rims, cast their reflected "
+       "rays) | background (they show the background)",
+       "ray-cast"},
   };
 }
 
@@ -69,6 +73,10 @@ Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& 
   auto rayCastPixels = options.integer("ray-cast-pixels", 0, passes::kMaxRayCastPixels);
   if (!rayCastPixels) return Error{rayCastPixels.error()};
   settings.rayCastPixels = *rayCastPixels;
+  const std::string uncovered = options.text("uncovered");
+  if (uncovered == "ray-cast") settings.rayCastUncovered = true;
+  else if (uncovered == "background") settings.rayCastUncovered = false;
+  else return Error{"--uncovered expects ray-cast or background, got '" + uncovered + "'"};
   return {};
 }
 

@@ -40,7 +40,7 @@ CommandLine renderOptions() {
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
       "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] "
-      "[--plan needed|everything] [--ray-cast-pixels N] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--plan needed|everything] [--ray-cast-pixels N] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
@@ -114,11 +114,11 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     char line[512];
     std::snprintf(line, sizeof line,
                   "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left out "
-                  "(%s)\n",
+                  "(%s); %zu uncovered pixels ray-cast\n",
                   scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
                   mirror.method == passes::PartMethod::RayCast ? "ray-cast" : "searched", mirror.searchedObjects,
                   mirror.searchedVertices, mirror.culledObjects, mirror.culledVertices,
-                  mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow");
+                  mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow", mirror.uncoveredRayCast);
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;

@@ -113,6 +113,11 @@ std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
   AccuracySetting half{"G-buffer RGBA16F", "G-buffer", {}};
   half.settings.gbufferPrecision = passes::GBufferPrecision::Float16;
   sweep.push_back(half);
+  // Every other row ray-casts the pixels its virtual objects leave uncovered; this one shows what
+  // the virtual objects alone leave there.
+  AccuracySetting gaps{"uncovered pixels show the background", "virtual objects alone", {}};
+  gaps.settings.rayCastUncovered = false;
+  sweep.push_back(gaps);
   if (std::any_of(scene.objects.begin(), scene.objects.end(), approximatesAnExactShape))
     for (const glm::ivec2 mesh : {glm::ivec2(32, 16), glm::ivec2(64, 32), glm::ivec2(128, 64), glm::ivec2(256, 128)})
       sweep.push_back({"mesh " + std::to_string(mesh.x) + "x" + std::to_string(mesh.y), "mesh", {}, mesh});

@@ -57,6 +57,7 @@ namespace specula::gl {
   X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                                       \
   X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                                     \
   X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData)                                                 \
+  X(PFNGLDRAWARRAYSINDIRECTPROC, DrawArraysIndirect)                                               \
   X(PFNGLBUFFERDATAPROC, BufferData)                                                               \
   X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                         \
   X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                                                   \

@@ -71,6 +71,9 @@ struct ReflectionSettings {
   // A mirror whose projected bounds cover at most this many frame pixels has each pixel's reflected
   // ray cast against its reflected objects (exact) instead of searching their every vertex; 0: never.
   int rayCastPixels = 16384;
+  // A searched part's pixels no virtual object landed on (coverage gaps at silhouettes and rims)
+  // have their reflected rays cast against the part's reflected objects; off shows the background.
+  bool rayCastUncovered = true;
   TessellationSettings tessellation;
 
   bool operator==(const ReflectionSettings&) const = default;

@@ -1,5 +1,6 @@
 #include "passes/VirtualObjectsPass.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "math/Transform.h"
@@ -24,10 +25,15 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   if (!region) return Error{region.error()};
   auto rayCast = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/ray-cast.frag"});
   if (!rayCast) return Error{rayCast.error()};
+  auto findUncovered = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/uncovered-pixels.frag"});
+  if (!findUncovered) return Error{findUncovered.error()};
+  auto uncoveredPixel = gl::ShaderProgram::build(gl, {"virtual-objects/uncovered-pixel.vert", "virtual-objects/ray-cast.frag"});
+  if (!uncoveredPixel) return Error{uncoveredPixel.error()};
   auto composite = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/reflection-composite.frag"});
   if (!composite) return Error{composite.error()};
   return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
                                                                     std::move(region.value()), std::move(rayCast.value()),
+                                                                    std::move(findUncovered.value()), std::move(uncoveredPixel.value()),
                                                                     std::move(composite.value())));
 }
 
@@ -59,32 +65,113 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMir
   }
 }
 
+std::vector<std::uint32_t> VirtualObjectsPass::readUncoveredCounts() const {
+  std::vector<std::uint32_t> counts(plannedParts_, 0);
+  if (counts.empty()) return counts;
+  gl_->BindBuffer(GL_COPY_READ_BUFFER, uncoveredCounts_.id());
+  gl_->GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(counts.size() * sizeof(std::uint32_t)), counts.data());
+  return counts;
+}
+
+void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const PlannedMirror& planned, std::size_t partIndex) {
+  const gl::GlApi& gl = frame.gl;
+  const PixelRect pixels = framePixels(frame.reflections.coveredFramePixels(planned.slots->layer), frame);
+  if (pixels.size().x <= 0 || pixels.size().y <= 0 || planned.reflected.empty()) return;
+  // Room for every pixel of the frame after the indirect draw command: kept while the size stays.
+  const GLsizeiptr bytes = static_cast<GLsizeiptr>(sizeof(DrawCommand) + sizeof(std::uint32_t) * reflectionSize_.x * reflectionSize_.y);
+  gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, uncovered_.id());
+  if (bytes != uncoveredBytes_) {
+    gl.BufferData(GL_DRAW_INDIRECT_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
+    uncoveredBytes_ = bytes;
+  }
+  const DrawCommand empty{0, 1, 0, 0};
+  gl.BufferSubData(GL_DRAW_INDIRECT_BUFFER, 0, sizeof(empty), &empty);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, uncovered_.id());
+  std::vector<glm::vec4> boxes;
+  boxes.reserve(2 * planned.reflected.size());
+  for (const ReflectionSlotRange* range : planned.reflected) {
+    boxes.emplace_back(frame.worldBounds[range->object].low, 0.0f);
+    boxes.emplace_back(frame.worldBounds[range->object].high, 0.0f);
+  }
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, reflectedBoxes_.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4)), boxes.data(), GL_STREAM_DRAW);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, reflectedBoxes_.id());
+
+  // Listed by a draw over the part's stencil into a framebuffer without colour, so that the
+  // reflection buffer can be read.
+  gl.BindFramebuffer(GL_FRAMEBUFFER, stencilOnly_.id());
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, frame.target.depthStencilTexture(), 0);
+  const GLenum noColour = GL_NONE;
+  gl.DrawBuffers(1, &noColour);
+  gl.DepthMask(GL_FALSE);
+  gl.DepthFunc(GL_ALWAYS);
+  findUncovered_.use();
+  gl.ActiveTexture(GL_TEXTURE2);
+  gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
+  gl.ActiveTexture(GL_TEXTURE0);
+  findUncovered_.set("reflection", 2);
+  findUncovered_.set("gbufferPosition", 0);
+  findUncovered_.set("gbufferNormal", 1);
+  setGBufferPixelMapping(findUncovered_, frame.reflections);
+  findUncovered_.set("layer", planned.slots->layer);
+  findUncovered_.set("eyePosition", frame.pose.camera.eye);
+  findUncovered_.set("boxCount", static_cast<int>(planned.reflected.size()));
+  gl.BindVertexArray(emptyVertexArray_.id());
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  gl.BindBuffer(GL_COPY_WRITE_BUFFER, uncoveredCounts_.id());
+  gl.CopyBufferSubData(GL_DRAW_INDIRECT_BUFFER, GL_COPY_WRITE_BUFFER, 0, static_cast<GLintptr>(partIndex * sizeof(std::uint32_t)),
+                       sizeof(std::uint32_t));
+  gl.DepthMask(GL_TRUE);
+  gl.DepthFunc(GL_LESS);
+
+  uncoveredPixel_.use();
+  uncoveredPixel_.set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
+  for (const ReflectionSlotRange* range : planned.reflected) {
+    prepareRayCast(frame, uncoveredPixel_, *planned.slots, range->object);
+    gl.DrawArraysIndirect(GL_POINTS, nullptr);
+  }
+  gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+}
+
 void VirtualObjectsPass::rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t objectIndex) const {
+  prepareRayCast(frame, rayCast_, mirror, objectIndex);
+  frame.gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror,
+                                        std::size_t objectIndex) const {
   const gl::GlApi& gl = frame.gl;
   ReflectionResources& resources = frame.reflections;
   const scene::SceneObject& object = frame.scene.objects[objectIndex];
   const ReflectionResources::MeshBvh& bvh = resources.meshBvh(object.mesh);
   const glm::mat4& objectToWorld = frame.pose.objectToWorld[objectIndex];
-  rayCast_.use();  // the G-buffer textures are bound by execute()
-  rayCast_.set("gbufferPosition", 0);
-  rayCast_.set("gbufferNormal", 1);
-  setGBufferPixelMapping(rayCast_, resources);
-  rayCast_.set("layer", mirror.layer);
-  rayCast_.set("eyePosition", frame.pose.camera.eye);
-  rayCast_.set("objectToWorld", objectToWorld);
-  rayCast_.set("worldToObject", glm::inverse(objectToWorld));
-  rayCast_.set("normalToWorld", math::normalMatrix(objectToWorld));
-  rayCast_.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-  rayCast_.set("minDistance", bvh.minDistance);
-  rayCast_.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
-  setSceneLighting(rayCast_, frame.scene);
-  setMaterial(rayCast_, frame.scene.materials[object.material]);
+  program.use();  // the G-buffer textures are bound by execute()
+  program.set("gbufferPosition", 0);
+  program.set("gbufferNormal", 1);
+  setGBufferPixelMapping(program, resources);
+  program.set("layer", mirror.layer);
+  program.set("eyePosition", frame.pose.camera.eye);
+  program.set("objectToWorld", objectToWorld);
+  program.set("worldToObject", glm::inverse(objectToWorld));
+  program.set("normalToWorld", math::normalMatrix(objectToWorld));
+  program.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+  program.set("minDistance", bvh.minDistance);
+  program.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
+  setSceneLighting(program, frame.scene);
+  setMaterial(program, frame.scene.materials[object.material]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, bvh.nodes.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, bvh.triangles.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, frame.meshes.vertexBuffer(object.mesh));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, frame.meshes.indexBuffer(object.mesh));
   gl.BindVertexArray(emptyVertexArray_.id());
-  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+VirtualObjectsPass::PixelRect VirtualObjectsPass::framePixels(const glm::vec4& rect, const FrameContext& frame) {
+  const glm::ivec2 size(frame.target.width(), frame.target.height());
+  const glm::ivec2 low = glm::clamp(glm::ivec2(glm::floor(glm::vec2(rect.x, rect.y))), glm::ivec2(0), size);
+  return {low, glm::clamp(glm::ivec2(glm::ceil(glm::vec2(rect.z, rect.w))), low, size)};
 }
 
 void VirtualObjectsPass::resetMirrorDepth(const FrameContext& frame) const {
@@ -118,6 +205,11 @@ void VirtualObjectsPass::bindReflectionBuffer(const FrameContext& frame) {
 void VirtualObjectsPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   bindReflectionBuffer(frame);
+  plannedParts_ = frame.plan.mirrors.size();
+  const std::vector<std::uint32_t> noneYet(plannedParts_, 0);
+  gl.BindBuffer(GL_COPY_WRITE_BUFFER, uncoveredCounts_.id());
+  gl.BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(1, plannedParts_) * sizeof(std::uint32_t)),
+                noneYet.empty() ? nullptr : noneYet.data(), GL_DYNAMIC_READ);
   gl.Disable(GL_FRAMEBUFFER_SRGB);  // linear until the composite writes the frame
   gl.Disable(GL_BLEND);
   gl.Disable(GL_SCISSOR_TEST);
@@ -157,15 +249,14 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
       const glm::vec4 covered = frame.reflections.coveredFramePixels(part.slots->layer);
       rect = glm::vec4(glm::min(glm::vec2(rect), glm::vec2(covered)), glm::max(glm::vec2(rect.z, rect.w), glm::vec2(covered.z, covered.w)));
     }
-    const glm::ivec2 size(frame.target.width(), frame.target.height());
-    const glm::ivec2 low = glm::clamp(glm::ivec2(glm::floor(glm::vec2(rect.x, rect.y))), glm::ivec2(0), size);
-    const glm::ivec2 high = glm::clamp(glm::ivec2(glm::ceil(glm::vec2(rect.z, rect.w))), low, size);
-    gl.Scissor(low.x, low.y, high.x - low.x, high.y - low.y);
+    const PixelRect pixels = framePixels(rect, frame);
+    gl.Scissor(pixels.low.x, pixels.low.y, pixels.size().x, pixels.size().y);
   };
 
   // Per mirror: its depth reset to the far plane, then each part's self-reflection and virtual
   // objects; every fragment is an exact hit at its exact depth, so the nearest wins in one pass.
-  for (const PlannedMirror& planned : frame.plan.mirrors) {
+  for (std::size_t partIndex = 0; partIndex < frame.plan.mirrors.size(); ++partIndex) {
+    const PlannedMirror& planned = frame.plan.mirrors[partIndex];
     const MirrorSlots* mirror = planned.slots;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
     if (mirror->part == 0) {
@@ -184,6 +275,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
       for (const ReflectionSlotRange* range : planned.reflected) rayCast(frame, *mirror, range->object);
     } else {
       drawObjects(frame, planned);
+      if (frame.settings.rayCastUncovered) rayCastUncovered(frame, planned, partIndex);
     }
   }
 

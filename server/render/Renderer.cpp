@@ -31,10 +31,13 @@ double millisecondsSince(Clock::time_point start) {
 // keeps 24-bit depth precise to ~1e-4 of the far distance.
 constexpr float kNearFarRatio = 1.0f / 2000.0f;
 
+// `kept`, when given, keeps a typed pointer to the pass for what the renderer reads back from it.
 template <class P>
-Status addPass(std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>>& passes, Result<std::unique_ptr<P>> pass) {
+Status addPass(std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>>& passes, Result<std::unique_ptr<P>> pass,
+               P** kept = nullptr) {
   if (!pass) return Error{pass.error()};
   const std::string_view name = (*pass)->name();
+  if (kept) *kept = pass->get();
   passes[name] = std::move(pass.value());
   return {};
 }
@@ -75,7 +78,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
                         addPass(renderer->passes_, passes::SearchPass::create(gl)),
                         addPass(renderer->passes_, passes::TessellationPass::create(gl)),
-                        addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl)),
+                        addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl), &renderer->virtualObjects_),
                         addPass(renderer->passes_, passes::EnvironmentMapPass::create(gl))})
     if (!status) return Error{status.error()};
   return renderer;
@@ -145,6 +148,10 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
                               mirror.culledObjects,       mirror.culledVertices};
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
+  }
+  if (plan.search && settings.rayCastUncovered) {
+    const std::vector<std::uint32_t> uncovered = virtualObjects_->readUncoveredCounts();
+    for (std::size_t i = 0; i < uncovered.size() && i < result.plan.size(); ++i) result.plan[i].uncoveredRayCast = uncovered[i];
   }
   mark(marks - 1);
   // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.

@@ -22,6 +22,10 @@
 #include "scene/Scene.h"
 #include "scene/ScenePose.h"
 
+namespace specula::passes {
+class VirtualObjectsPass;
+}
+
 namespace specula::render {
 
 // One visible mirror part's share of the frame plan: the reflected objects searched, and those left
@@ -35,6 +39,7 @@ struct MirrorPlanSummary {
   bool facesAway = false;  // the eye sees only its back: nothing searched
   std::size_t searchedObjects = 0, searchedVertices = 0;
   std::size_t culledObjects = 0, culledVertices = 0;
+  std::size_t uncoveredRayCast = 0;  // pixels no virtual object covered, ray-cast instead (searched parts)
 };
 
 struct RenderedFrame {
@@ -90,6 +95,7 @@ class Renderer {
   passes::ReflectionSlots slots_;
   passes::ReflectionResources reflections_;
   std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>> passes_;
+  passes::VirtualObjectsPass* virtualObjects_ = nullptr;  // in passes_
   std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
   std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
   bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock

@@ -62,6 +62,7 @@ Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
     plan.set_searched_vertices(static_cast<std::uint32_t>(mirror.searchedVertices));
     plan.set_culled_objects(static_cast<std::uint32_t>(mirror.culledObjects));
     plan.set_culled_vertices(static_cast<std::uint32_t>(mirror.culledVertices));
+    plan.set_uncovered_ray_cast(static_cast<std::uint32_t>(mirror.uncoveredRayCast));
   }
   return out;
 }

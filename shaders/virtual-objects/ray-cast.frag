@@ -3,8 +3,9 @@
 // as the ray tracer does with one bounce) against the object's mesh through its hierarchy, and
 // keeping the nearest hit, shaded there at the depth of that reflection like a virtual object.
 // Serves two cases: the mirror meeting itself (a bowl's inside reflecting its far wall: it shows its
-// own colour there, and what lies behind it in its own reflection stays hidden), and the objects of
-// a part the frame plan ray-casts instead of searching (a mirror covering few pixels).
+// own colour there, and what lies behind it in its own reflection stays hidden), the objects of a
+// part the frame plan ray-casts instead of searching (a mirror covering few pixels), and the pixels
+// of a searched part that no virtual object landed on (drawn as points, uncovered-pixel.vert).
 #include "common/clip-depth.glsl"
 #include "common/gbuffer-texel.glsl"
 #include "common/shading.glsl"
@@ -43,9 +44,11 @@ void main() {
   float distance;
   uint triangle;
   vec2 barycentric;
-  if (!intersectBvh((worldToObject * vec4(surface, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, 1e30,
-                    distance, triangle, barycentric))
-    discard;
+  vec3 origin = (worldToObject * vec4(surface, 1.0)).xyz, direction = mat3(worldToObject) * reflected;
+  // Most rays of a part miss most objects: the root box alone turns them away, before the traversal
+  // sets up its stack.
+  if (!bvhBoxHit(bvhNodes[0], origin, 1.0 / direction, minDistance, 1e30)) discard;
+  if (!intersectBvh(origin, direction, minDistance, 1e30, distance, triangle, barycentric)) discard;
   uint i0 = meshIndex[3u * triangle], i1 = meshIndex[3u * triangle + 1u], i2 = meshIndex[3u * triangle + 2u];
   vec3 weights = vec3(1.0 - barycentric.x - barycentric.y, barycentric);
   vec3 position = weights.x * attribute3(i0, 0u) + weights.y * attribute3(i1, 0u) + weights.z * attribute3(i2, 0u);

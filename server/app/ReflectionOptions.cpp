@@ -58,6 +58,10 @@ std::vector<OptionSpec> planOptions() {
        "needed"},
       {"ray-cast-pixels", "N", "a mirror covering at most N pixels (projected bounds) ray-casts its pixels instead of searching; 0 = never",
        std::to_string(defaults.rayCastPixels)},
+      {"error-budget", "PX",
+       "pixels the planner may move a reflection by: leaves out objects whose image in a convex part is smaller, shows a "
+       "smaller mirror in its own colour; 0 = only exact decisions",
+       "0.5"},
       {"uncovered", "FILL",
        "ray-cast (a searched mirror's pixels no virtual object covered, towards silhouettes and rims, cast their reflected "
        "rays) | background (they show the background)",
@@ -73,6 +77,10 @@ Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& 
   auto rayCastPixels = options.integer("ray-cast-pixels", 0, passes::kMaxRayCastPixels);
   if (!rayCastPixels) return Error{rayCastPixels.error()};
   settings.rayCastPixels = *rayCastPixels;
+  auto budget = options.number("error-budget");
+  if (!budget || !(*budget >= 0.0 && *budget <= passes::kMaxErrorBudgetPixels))
+    return Error{"--error-budget expects pixels in [0, 16], got '" + options.text("error-budget") + "'"};
+  settings.errorBudgetPixels = static_cast<float>(*budget);
   const std::string uncovered = options.text("uncovered");
   if (uncovered == "ray-cast") settings.rayCastUncovered = true;
   else if (uncovered == "background") settings.rayCastUncovered = false;

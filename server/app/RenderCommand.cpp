@@ -40,7 +40,7 @@ CommandLine renderOptions() {
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
       "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] "
-      "[--plan needed|everything] [--ray-cast-pixels N] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--plan needed|everything] [--ray-cast-pixels N] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
@@ -93,8 +93,19 @@ const char* surfaceName(scene::SurfaceKind kind) {
   return "?";
 }
 
+// What a planned part does with its reflected objects, as the plan line says it.
+const char* methodWords(passes::PartMethod method) {
+  switch (method) {
+    case passes::PartMethod::VirtualObjects: return "searched";
+    case passes::PartMethod::RayCast: return "ray-cast";
+    case passes::PartMethod::OwnColour: return "own colour, drew";
+  }
+  return "?";
+}
+
 // Per-stage timings, the plan and search statistics of a GL frame, as `render` prints them.
-std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame& frame) {
+std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame& frame,
+                          const passes::ReflectionSettings& settings) {
   std::string text = "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ":";
   for (const render::StageTiming& stage : frame.timings.stages)
     text += " " + stage.name + " " + formatMilliseconds(stage.milliseconds) + " ms,";
@@ -114,11 +125,12 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     char line[512];
     std::snprintf(line, sizeof line,
                   "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left out "
-                  "(%s); %zu uncovered pixels ray-cast\n",
+                  "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast\n",
                   scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
-                  mirror.method == passes::PartMethod::RayCast ? "ray-cast" : "searched", mirror.searchedObjects,
-                  mirror.searchedVertices, mirror.culledObjects, mirror.culledVertices,
-                  mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow", mirror.uncoveredRayCast);
+                  methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,
+                  mirror.culledVertices, mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow",
+                  mirror.belowBudgetObjects, mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels),
+                  mirror.uncoveredRayCast);
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;
@@ -180,7 +192,7 @@ int runRender(std::span<const std::string> arguments) {
     auto frame = (*renderer)->render(pose, size->first, size->second, *settings);
     if (!frame) return fail(frame.error());
     rgba = std::move(frame->rgba);
-    timings = describeFrame(**scene, *frame);
+    timings = describeFrame(**scene, *frame, *settings);
   }
 
   const encode::ImageView view{rgba.data(), size->first, size->second};

@@ -71,6 +71,7 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"mirror_parts", std::to_string(r.plannedParts)});
   f.push_back({"ray_cast_parts", std::to_string(r.rayCastParts)});
   f.push_back({"culled_vertices", std::to_string(r.culledVertices)});
+  f.push_back({"below_budget_vertices", std::to_string(r.belowBudgetVertices)});
   f.push_back({"uncovered_ray_cast_px", std::to_string(r.uncoveredRayCast)});
   const auto& e = r.pointError;
   f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
@@ -339,7 +340,8 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
     table += passes + "\n";
     table += "  plan (last frame): " + std::to_string(r.plannedParts) + " mirror parts, " + std::to_string(r.rayCastParts) +
              " ray-cast, " + std::to_string(r.culledVertices) + " reflected vertices left out, " +
-             std::to_string(r.uncoveredRayCast) + " uncovered pixels ray-cast\n";
+             std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
+             " uncovered pixels ray-cast\n";
   }
   return table;
 }

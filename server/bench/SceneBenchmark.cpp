@@ -139,6 +139,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   for (const render::MirrorPlanSummary& part : last.plan) {
     result.rayCastParts += part.method == passes::PartMethod::RayCast ? 1 : 0;
     result.culledVertices += part.culledVertices;
+    result.belowBudgetVertices += part.belowBudgetVertices;
     result.uncoveredRayCast += part.uncoveredRayCast;
   }
   if (measurePoints && !pointErrors.pixels.empty()) {  // none where every mirror was ray-cast

@@ -49,6 +49,7 @@ struct SceneBenchResult {
   unsigned searchedPerFrame = 0, hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's
   // The last frame's plan: visible mirror parts, those ray-cast, and reflected vertices left out.
   std::size_t plannedParts = 0, rayCastParts = 0, culledVertices = 0;
+  std::size_t belowBudgetVertices = 0;  // last frame: of objects whose image is under the error budget
   std::size_t uncoveredRayCast = 0;  // last frame: pixels no virtual object covered, ray-cast instead
 
   // Reflection-point error in pixels over all frames; absent without an analytic sphere mirror.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/constants.hpp>
 
@@ -36,14 +37,44 @@ bool halfFloatsResolve(const math::Bounds& mirrorBounds) {
   return largest <= kReachInRadii * mirrorBounds.radius();
 }
 
+namespace {
+
+// Pixels per unit of tan(angle) off the view axis.
+double focalPixels(const math::Camera& camera, glm::ivec2 frameSize) {
+  return 0.5 * frameSize.y / std::tan(glm::radians(static_cast<double>(camera.fovYDegrees)) * 0.5);
+}
+
+// Radius in pixels of a sphere of `radius` seen `distance` away (distance > radius).
+double projectedRadius(double radius, double distance, double focal) { return focal * std::tan(std::asin(radius / distance)); }
+
+}  // namespace
+
+const char* partMethodName(PartMethod method) {
+  switch (method) {
+    case PartMethod::VirtualObjects: return "virtual-objects";
+    case PartMethod::RayCast: return "ray-cast";
+    case PartMethod::OwnColour: return "own-colour";
+  }
+  return "virtual-objects";
+}
+
 double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, glm::ivec2 frameSize) {
   const double framePixels = static_cast<double>(frameSize.x) * static_cast<double>(frameSize.y);
   if (bounds.empty()) return 0.0;
   const double distance = glm::length(bounds.center() - camera.eye), radius = bounds.radius();
   if (distance <= radius) return framePixels;
-  const double focal = 0.5 * frameSize.y / std::tan(glm::radians(static_cast<double>(camera.fovYDegrees)) * 0.5);
-  const double projectedRadius = focal * std::tan(std::asin(radius / distance));
-  return std::min(framePixels, glm::pi<double>() * projectedRadius * projectedRadius);
+  const double pixels = projectedRadius(radius, distance, focalPixels(camera, frameSize));
+  return std::min(framePixels, glm::pi<double>() * pixels * pixels);
+}
+
+double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds& object, const math::Camera& camera,
+                                 glm::ivec2 frameSize) {
+  if (mirror.empty() || object.empty()) return 0.0;
+  const double eyeToMirror = glm::length(mirror.center() - camera.eye) - mirror.radius();
+  const double mirrorToObject = glm::length(object.center() - mirror.center()) - mirror.radius() - object.radius();
+  const double path = eyeToMirror + mirrorToObject;
+  if (eyeToMirror <= 0.0 || mirrorToObject <= 0.0 || path <= object.radius()) return std::numeric_limits<double>::infinity();
+  return 2.0 * projectedRadius(object.radius(), path, focalPixels(camera, frameSize));
 }
 
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
@@ -58,18 +89,30 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     if (mirror.reflected.empty()) continue;
     if (!everything && !boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f)) continue;
     const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
-    const double pixels = projectedPixels(worldBounds[mirror.mirrorObject], camera, frameSize);
-    const bool rayCast = !everything && settings.method == ReflectionMethod::Search && pixels <= settings.rayCastPixels;
+    const math::Bounds& mirrorBounds = worldBounds[mirror.mirrorObject];
+    const double pixels = projectedPixels(mirrorBounds, camera, frameSize);
+    const bool search = settings.method == ReflectionMethod::Search;
+    PartMethod method = PartMethod::VirtualObjects;
+    // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.
+    if (!everything && search && 2.0 * std::sqrt(pixels / glm::pi<double>()) < settings.errorBudgetPixels)
+      method = PartMethod::OwnColour;
+    else if (!everything && search && pixels <= settings.rayCastPixels)
+      method = PartMethod::RayCast;
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but draws nothing.
-    PlannedMirror planned{&mirror, rayCast ? PartMethod::RayCast : PartMethod::VirtualObjects, pixels, {},
-                          !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    PlannedMirror planned{&mirror, method, pixels, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
     for (const ReflectionSlotRange& range : mirror.reflected) {
-      if (everything || (!planned.facesAway && canAppearIn(mirror.reach, mirrorToWorld, worldBounds[range.object], camera.eye))) {
-        planned.reflected.push_back(&range);
-      } else {
+      const math::Bounds& objectBounds = worldBounds[range.object];
+      if (!everything && (planned.facesAway || !canAppearIn(mirror.reach, mirrorToWorld, objectBounds, camera.eye))) {
         ++planned.culledObjects;
         planned.culledVertices += range.vertexCount;
+      } else if (method == PartMethod::OwnColour ||
+                 (!everything && mirror.kind == scene::SurfaceKind::Convex &&
+                  convexImageDiameterPixels(mirrorBounds, objectBounds, camera, frameSize) < settings.errorBudgetPixels)) {
+        ++planned.belowBudgetObjects;
+        planned.belowBudgetVertices += range.vertexCount;
+      } else {
+        planned.reflected.push_back(&range);
       }
     }
     plan.mirrors.push_back(std::move(planned));

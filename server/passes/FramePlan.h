@@ -16,7 +16,11 @@ namespace specula::passes {
 enum class PartMethod {
   VirtualObjects,  // search every reflected vertex, tessellate, rasterize the virtual objects
   RayCast,         // cast each of its pixels' reflected rays against the objects' meshes
+  OwnColour,       // smaller on screen than the error budget: its own colour and the background it reflects
 };
+
+// "virtual-objects", "ray-cast" or "own-colour", as render, bench and the protocol name them.
+const char* partMethodName(PartMethod method);
 
 // A mirror part whose reflection is drawn this frame, and the reflected objects that can appear in it.
 struct PlannedMirror {
@@ -26,6 +30,9 @@ struct PlannedMirror {
   std::vector<const ReflectionSlotRange*> reflected;
   bool facesAway = false;  // the eye is behind every tangent plane of the part: nothing is searched
   std::size_t culledObjects = 0, culledVertices = 0;  // left out: behind the part or in its shadow
+  // Left out because their image in this convex part, or the whole part (OwnColour), is smaller on
+  // screen than the error budget.
+  std::size_t belowBudgetObjects = 0, belowBudgetVertices = 0;
 };
 
 struct FramePlan {
@@ -50,6 +57,12 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
 
 // Frame pixels the box's enclosing sphere covers, about (all of them when the eye is inside it).
 double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, glm::ivec2 frameSize);
+
+// An upper bound on the diameter in frame pixels of any image of `object` in a convex mirror part
+// inside `mirror` (world boxes), seen from `eye`: a flat mirror shows an object at least as far as
+// the eye–mirror–object path, and a convex one shrinks it further. Infinite when the bounds meet.
+double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds& object, const math::Camera& camera,
+                                 glm::ivec2 frameSize);
 
 // Whether a world-space box can be seen through the camera's frustum widened by `margin`.
 bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, float aspect, float margin);

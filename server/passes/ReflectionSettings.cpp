@@ -26,6 +26,11 @@ std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& s
            std::to_string(kMaxEnvironmentMapSize) + "] texels per cube face";
   if (settings.rayCastPixels < 0 || settings.rayCastPixels > kMaxRayCastPixels)
     return "the ray-cast pixel bound must lie in [0, " + std::to_string(kMaxRayCastPixels) + "]";
+  if (!(settings.errorBudgetPixels >= 0.0f && settings.errorBudgetPixels <= kMaxErrorBudgetPixels)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "the error budget must lie in [0, %g] pixels", kMaxErrorBudgetPixels);
+    return text;
+  }
   if (settings.maxWalkSteps < 1) return "the search needs at least one step per climb";
   return std::nullopt;
 }

@@ -54,6 +54,7 @@ std::string describeTessellation(const TessellationSettings& settings);
 inline constexpr float kMinGBufferScale = 0.125f, kMaxGBufferScale = 4.0f;
 inline constexpr int kMinEnvironmentMapSize = 8, kMaxEnvironmentMapSize = 2048;
 inline constexpr int kMaxRayCastPixels = 1 << 24;
+inline constexpr float kMaxErrorBudgetPixels = 16.0f;
 
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;
@@ -74,6 +75,10 @@ struct ReflectionSettings {
   // A searched part's pixels no virtual object landed on (coverage gaps at silhouettes and rims)
   // have their reflected rays cast against the part's reflected objects; off shows the background.
   bool rayCastUncovered = true;
+  // Pixels the planner's approximations may move a reflection by (in [0, kMaxErrorBudgetPixels]):
+  // a reflected object whose image in a convex part is smaller than this is left out, and a mirror
+  // smaller than this on screen shows its own colour. 0: only exact decisions.
+  float errorBudgetPixels = 0.5f;
   TessellationSettings tessellation;
 
   bool operator==(const ReflectionSettings&) const = default;

@@ -270,12 +270,18 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setForBoth("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
     setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
     setForBoth("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
-    if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
-    if (planned.method == PartMethod::RayCast) {
-      for (const ReflectionSlotRange* range : planned.reflected) rayCast(frame, *mirror, range->object);
-    } else {
-      drawObjects(frame, planned);
-      if (frame.settings.rayCastUncovered) rayCastUncovered(frame, planned, partIndex);
+    switch (planned.method) {
+      case PartMethod::OwnColour:  // the composite adds the background it reflects
+        break;
+      case PartMethod::RayCast:
+        if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
+        for (const ReflectionSlotRange* range : planned.reflected) rayCast(frame, *mirror, range->object);
+        break;
+      case PartMethod::VirtualObjects:
+        if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
+        drawObjects(frame, planned);
+        if (frame.settings.rayCastUncovered) rayCastUncovered(frame, planned, partIndex);
+        break;
     }
   }
 

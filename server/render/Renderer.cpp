@@ -145,7 +145,8 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
     MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part,   mirror.slots->kind,     mirror.method,
                               mirror.projectedPixels,     mirror.facesAway,     mirror.reflected.size(), 0,
-                              mirror.culledObjects,       mirror.culledVertices};
+                              mirror.culledObjects,       mirror.culledVertices,    mirror.belowBudgetObjects,
+                              mirror.belowBudgetVertices};
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }

@@ -39,6 +39,7 @@ struct MirrorPlanSummary {
   bool facesAway = false;  // the eye sees only its back: nothing searched
   std::size_t searchedObjects = 0, searchedVertices = 0;
   std::size_t culledObjects = 0, culledVertices = 0;
+  std::size_t belowBudgetObjects = 0, belowBudgetVertices = 0;  // images smaller than the error budget
   std::size_t uncoveredRayCast = 0;  // pixels no virtual object covered, ray-cast instead (searched parts)
 };
 

@@ -57,12 +57,14 @@ Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
     plan.set_mirror(renderer_->scene().objects[mirror.mirrorObject].name);
     plan.set_part(static_cast<std::uint32_t>(mirror.part));
     plan.set_faces_away(mirror.facesAway);
-    plan.set_method(mirror.method == passes::PartMethod::RayCast ? "ray-cast" : "virtual-objects");
+    plan.set_method(passes::partMethodName(mirror.method));
     plan.set_searched_objects(static_cast<std::uint32_t>(mirror.searchedObjects));
     plan.set_searched_vertices(static_cast<std::uint32_t>(mirror.searchedVertices));
     plan.set_culled_objects(static_cast<std::uint32_t>(mirror.culledObjects));
     plan.set_culled_vertices(static_cast<std::uint32_t>(mirror.culledVertices));
     plan.set_uncovered_ray_cast(static_cast<std::uint32_t>(mirror.uncoveredRayCast));
+    plan.set_below_budget_objects(static_cast<std::uint32_t>(mirror.belowBudgetObjects));
+    plan.set_below_budget_vertices(static_cast<std::uint32_t>(mirror.belowBudgetVertices));
   }
   return out;
 }

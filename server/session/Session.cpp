@@ -42,6 +42,7 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   out.set_metric(t.metric == passes::TessellationMetric::Pixels ? v1::METRIC_PIXELS : v1::METRIC_ANGLE);
   out.set_threshold(t.threshold);
   out.set_level(t.maxLevel == 0 ? -1 : t.maxLevel);
+  out.set_error_budget_px(settings.reflection.errorBudgetPixels == 0.0f ? -1.0f : settings.reflection.errorBudgetPixels);
   out.set_resolution_scale(settings.resolutionScale);
   out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
   out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
@@ -330,6 +331,11 @@ Status Session::applySettings(const v1::RenderSettings& update) {
   if (update.level() != 0) {
     if (update.level() < -1 || update.level() > kMaxTessellationLevel) return Error{"settings: level must be 0..8 (-1 for 0)"};
     t.maxLevel = std::max(0, update.level());
+  }
+  if (update.error_budget_px() != 0.0f) {
+    const float budget = update.error_budget_px() == -1.0f ? 0.0f : update.error_budget_px();
+    if (!(budget >= 0.0f && budget <= passes::kMaxErrorBudgetPixels)) return Error{"settings: error_budget_px must be in [0, 16] (-1 for 0)"};
+    settings.reflection.errorBudgetPixels = budget;
   }
   if (update.resolution_scale() != 0.0f) {
     if (!std::isfinite(update.resolution_scale()) || update.resolution_scale() < 0.05f || update.resolution_scale() > 1.0f)

@@ -46,9 +46,12 @@ check "... and runs no search" bash -c "! grep -q ' search ' <<<'$output'"
 output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast-pixels 0 --out "$work/p0.png" 2>&1)
 check "--ray-cast-pixels 0 searches every mirror" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
 fails_with "a negative ray-cast bound is refused by name" "--ray-cast-pixels expects an integer in [0, 16777216]" render --ray-cast-pixels -5
-check "a searched mirror says how many uncovered pixels it ray-cast" grep -q "behind it or in its shadow); [0-9]* uncovered pixels ray-cast" <<<"$output"
+check "a searched mirror says how many uncovered pixels it ray-cast" grep -q "behind it or in its shadow); 0 objects (0 vertices) under the 0.5 px error budget; [0-9]* uncovered pixels ray-cast" <<<"$output"
 output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast-pixels 0 --uncovered background --out "$work/pb.png" 2>&1)
 check "--uncovered background ray-casts none" grep -q "; 0 uncovered pixels ray-cast" <<<"$output"
+output=$("$specula" render --scene checker-sphere --size 16x12 --error-budget 16 --out "$work/tiny.png" 2>&1)
+check "a mirror narrower than the error budget shows its own colour" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): own colour, drew 0 objects (0 vertices); 0 objects, 0 vertices left out (behind it or in its shadow); 1 objects (289 vertices) under the 16 px error budget" <<<"$output"
+fails_with "a negative error budget is refused by name" "--error-budget expects pixels in [0, 16], got '-1'" render --error-budget -1
 fails_with "an unknown uncovered-pixel fill names the choices" "--uncovered expects ray-cast or background, got 'grey'" render --uncovered grey
 check "--plan everything renders too" "$specula" render --scene checker-sphere --size 96x72 --plan everything --out "$work/pe.png"
 "$specula" render --method environment-map --environment-size 32 --gbuffer-scale 0.5 --gbuffer-precision 16 --size 96x72 --out "$work/env.png" >"$work/env.txt" 2>&1
@@ -57,7 +60,7 @@ check "... and runs the environment-map pass, not the search" bash -c "grep -q '
 check "... and writes a PNG" bash -c "head -c 8 '$work/env.png' | od -An -tx1 | grep -q '89 50 4e 47'"
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"
-check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast-pixels uncovered tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
+check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast-pixels error-budget uncovered tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
 finish

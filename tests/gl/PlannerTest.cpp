@@ -3,6 +3,7 @@
 // faces away. Left out means fewer searches and the same picture as `--plan everything`.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -107,6 +108,44 @@ TEST(Planner, AnObjectInAnAnalyticSpheresShadowIsLeftOutAndThePictureStays) {
 
 TEST(Planner, AnObjectInAMeshSpheresShadowIsLeftOutAndThePictureStays) {
   expectTheHiddenBallLeftOutAndTheSamePicture(parse(sphereWithAHiddenBall(R"({"curvature": "convex"})")));
+}
+
+// Sixteen 16 mm beacons 30-50 m around a mirror sphere: each image in the convex mirror is under
+// half a pixel, so the default error budget leaves them out; at most one pixel each may change.
+TEST(Planner, ObjectsWhoseImageIsUnderTheErrorBudgetAreLeftOutAndMoveAtMostAPixelEach) {
+  std::string beacons;
+  constexpr int kBeacons = 16;
+  for (int i = 0; i < kBeacons; ++i) {
+    const float angle = 0.4f * static_cast<float>(i), distance = 30.0f + 20.0f * static_cast<float>(i % 5) / 4.0f;
+    beacons += R"(, {"name": "beacon-)" + std::to_string(i) + R"(", "mesh": "beacon", "material": "red", "translation": [)" +
+               std::to_string(distance * std::sin(angle)) + ", " + std::to_string(0.5f * static_cast<float>(i % 4)) + ", " +
+               std::to_string(distance * std::cos(angle)) + "]}";
+  }
+  const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#000000",
+    "camera": {"eye": [1, 3, 3.5], "target": [0, -0.3, 0], "fov": 40},
+    "meshes": [{"name": "mirror-sphere", "primitive": {"type": "sphere", "radius": 1, "slices": 64, "stacks": 32}},
+      {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
+      {"name": "beacon", "primitive": {"type": "sphere", "radius": 0.008, "slices": 8, "stacks": 4}}],
+    "materials": [{"name": "mirror", "color": "#000000", "reflectivity": 1},
+      {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
+      {"name": "red", "color": "#ff2020", "unlit": true}],
+    "objects": [{"name": "mirror-sphere", "mesh": "mirror-sphere", "material": "mirror", "reflected": false,
+                 "mirror": {"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}}},
+      {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]})" +
+                           beacons + R"(],
+    "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
+  ASSERT_TRUE(scene);
+  const PlannedAndEverything frames = renderBoth(scene);
+  ASSERT_EQ(frames.needed.plan.size(), 1u);
+  const render::MirrorPlanSummary& planned = frames.needed.plan[0];
+  const std::size_t beaconVertices = scene->meshes[scene->objects[2].mesh].vertices.size();
+  EXPECT_EQ(planned.belowBudgetObjects, static_cast<std::size_t>(kBeacons));
+  EXPECT_EQ(planned.belowBudgetVertices, kBeacons * beaconVertices);
+  EXPECT_EQ(planned.searchedObjects, 1u) << "the floor";
+  EXPECT_EQ(frames.needed.search.searched + planned.belowBudgetVertices, frames.everything.search.searched);
+  EXPECT_LE(frames.differingPixels, static_cast<std::size_t>(kBeacons));
+  std::printf("%d beacons under the budget: %zu of %u searches left out, %zu pixels differ\n", kBeacons,
+              planned.belowBudgetVertices, frames.everything.search.searched, frames.differingPixels);
 }
 
 // A mirror cube split into its six flat faces: the three the camera cannot see search nothing, the

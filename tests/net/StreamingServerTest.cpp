@@ -147,6 +147,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_level(2);
     settings.mutable_settings()->set_jpeg_quality(70);
     settings.mutable_settings()->set_plan(v1::PLAN_EVERYTHING);
+    settings.mutable_settings()->set_error_budget_px(-1.0f);  // 0: only exact decisions
     ASSERT_TRUE(client->send(settings).ok());
     ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
     client->close();
@@ -163,6 +164,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().level(), 2);
   EXPECT_EQ(welcome.settings().jpeg_quality(), 70u);
   EXPECT_EQ(welcome.settings().plan(), v1::PLAN_EVERYTHING);
+  EXPECT_EQ(welcome.settings().error_budget_px(), -1.0f);
   EXPECT_NE(welcome.resume_token(), token) << "a token resumes once";
 
   auto third = rig.connect(GetParam());
@@ -257,6 +259,8 @@ TEST(StreamingServerInput, OutOfRangeValuesAreRefusedWithAnErrorAndTheSessionGoe
       R"({"resize":{"width":100000,"height":10}})",
       R"({"settings":{"level":99}})",
       R"({"settings":{"plan":7}})",
+      R"({"settings":{"errorBudgetPx":99}})",
+      R"({"settings":{"errorBudgetPx":-0.5}})",
       R"({"settings":{"resolutionScale":"Infinity"}})",
       R"({"animation":{"speed":1000}})",
       R"({"animation":{"overrides":[{"object":"no-such-thing"}]}})",

@@ -2,12 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "passes/FramePlan.h"
+#include "scene/Primitives.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
+#include "scene/builtin/SceneAssembly.h"
 
 using namespace specula;
 
@@ -218,4 +221,121 @@ TEST(FramePlan, ARayCastBoundOutOfRangeIsRefusedByName) {
   EXPECT_TRUE(passes::reflectionSettingsProblem(settings));
   settings.rayCastPixels = 0;
   EXPECT_FALSE(passes::reflectionSettingsProblem(settings));
+}
+
+TEST(FramePlan, AnErrorBudgetOutOfRangeIsRefusedByName) {
+  passes::ReflectionSettings settings;
+  for (float budget : {-0.1f, std::nanf(""), passes::kMaxErrorBudgetPixels + 0.5f}) {
+    settings.errorBudgetPixels = budget;
+    ASSERT_TRUE(passes::reflectionSettingsProblem(settings)) << budget;
+    EXPECT_NE(passes::reflectionSettingsProblem(settings)->find("error budget"), std::string::npos);
+  }
+  for (float budget : {0.0f, 0.5f, passes::kMaxErrorBudgetPixels}) {
+    settings.errorBudgetPixels = budget;
+    EXPECT_FALSE(passes::reflectionSettingsProblem(settings)) << budget;
+  }
+}
+
+// An image in a convex mirror is never larger than the object seen along the eye-mirror-object path.
+TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {
+  const math::Camera camera{{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 45.0f};
+  math::Bounds mirror;
+  mirror.add(glm::vec3(-1.0f));
+  mirror.add(glm::vec3(1.0f));
+  const auto boxAt = [](const glm::vec3& centre, float half) {
+    math::Bounds box;
+    box.add(centre - glm::vec3(half));
+    box.add(centre + glm::vec3(half));
+    return box;
+  };
+  const double focal = 240.0 / std::tan(glm::radians(22.5));
+  const math::Bounds far = boxAt({100.0f, 0.0f, 0.0f}, 0.01f);
+  const double path = (5.0 - mirror.radius()) + (100.0 - mirror.radius() - far.radius());
+  EXPECT_NEAR(passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}), 2.0 * focal * std::tan(std::asin(far.radius() / path)),
+              1e-6);
+  EXPECT_LT(passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}), 0.5);
+  EXPECT_GT(passes::convexImageDiameterPixels(mirror, boxAt({3.0f, 0.0f, 0.0f}, 0.5f), camera, {640, 480}), 10.0);
+  EXPECT_TRUE(std::isinf(passes::convexImageDiameterPixels(mirror, boxAt({1.5f, 0.0f, 0.0f}, 0.6f), camera, {640, 480})))
+      << "an object touching the mirror's bounds can fill it";
+}
+
+namespace {
+
+// `scene` with a box of side `size` added at `centre`, reflected in its mirrors.
+scene::Scene withBox(scene::Scene scene, const glm::vec3& centre, float size) {
+  const std::uint32_t mesh = scene::builtin::addMesh(scene, scene::primitives::box("probe-box", glm::vec3(size)));
+  scene::builtin::addObject(scene, "probe", mesh, 0, scene::builtin::placed(centre));
+  return scene;
+}
+
+// The planned part `part` of the scene's first mirror, for the scene's camera at t = 0.
+passes::PlannedMirror plannedPart(const scene::Scene& scene, const passes::ReflectionSlots& slots, int part,
+                                  const passes::ReflectionSettings& settings, glm::ivec2 frame = {640, 480}) {
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), frame, settings);
+  for (const passes::PlannedMirror& planned : plan.mirrors)
+    if (planned.slots->part == part) return planned;
+  ADD_FAILURE() << "part " << part << " is not planned";
+  return {};
+}
+
+bool reflects(const passes::PlannedMirror& planned, const std::string& name, const scene::Scene& scene) {
+  return std::any_of(planned.reflected.begin(), planned.reflected.end(),
+                     [&](const passes::ReflectionSlotRange* range) { return scene.objects[range->object].name == name; });
+}
+
+}  // namespace
+
+TEST(FramePlan, AnObjectWhoseImageIsUnderTheBudgetIsLeftOutOfConvexPartsOnly) {
+  passes::ReflectionSettings searched;
+  searched.rayCastPixels = 0;
+  passes::ReflectionSettings exact = searched;
+  exact.errorBudgetPixels = 0.0f;
+  passes::ReflectionSettings everything = searched;
+  everything.plan = passes::PlanScope::Everything;
+
+  // A 2 cm box 60 m beside the sphere: well under half a pixel in it.
+  const scene::Scene far = withBox(*scene::makeBuiltinScene("checker-sphere"), {60.0f, 1.0f, 10.0f}, 0.02f);
+  const auto slots = passes::ReflectionSlots::forScene(far);
+  const passes::PlannedMirror budgeted = plannedPart(far, slots, 0, searched);
+  EXPECT_FALSE(reflects(budgeted, "probe", far));
+  EXPECT_EQ(budgeted.belowBudgetObjects, 1u);
+  EXPECT_EQ(budgeted.belowBudgetVertices, 24u);
+  EXPECT_TRUE(reflects(budgeted, "floor", far));
+  EXPECT_TRUE(reflects(plannedPart(far, slots, 0, exact), "probe", far)) << "a zero budget keeps every object";
+  EXPECT_TRUE(reflects(plannedPart(far, slots, 0, everything), "probe", far));
+
+  // The same box next to the sphere is kept.
+  const scene::Scene near = withBox(*scene::makeBuiltinScene("checker-sphere"), {2.0f, 1.0f, 1.0f}, 0.02f);
+  EXPECT_TRUE(reflects(plannedPart(near, passes::ReflectionSlots::forScene(near), 0, searched), "probe", near));
+
+  // A concave part can magnify any image: the kitchen bowl's inside keeps the far box, its outside does not.
+  const scene::Scene kitchen = withBox(*scene::makeBuiltinScene("kitchen"), {60.0f, 1.0f, 10.0f}, 0.02f);
+  const auto kitchenSlots = passes::ReflectionSlots::forScene(kitchen);
+  const passes::PlannedMirror outside = plannedPart(kitchen, kitchenSlots, 0, searched);
+  const passes::PlannedMirror inside = plannedPart(kitchen, kitchenSlots, 1, searched);
+  ASSERT_EQ(outside.slots->kind, scene::SurfaceKind::Convex);
+  ASSERT_EQ(inside.slots->kind, scene::SurfaceKind::Concave);
+  EXPECT_FALSE(reflects(outside, "probe", kitchen));
+  EXPECT_TRUE(reflects(inside, "probe", kitchen));
+}
+
+TEST(FramePlan, AMirrorNarrowerThanTheBudgetShowsItsOwnColour) {
+  const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  const auto bounds = worldBounds(scene, pose);
+  passes::ReflectionSettings wide;
+  wide.errorBudgetPixels = passes::kMaxErrorBudgetPixels;
+  // At 16x12 the sphere is about 13 px across: under a 16 px budget.
+  const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, {16, 12}, wide);
+  ASSERT_EQ(plan.mirrors.size(), 1u);
+  EXPECT_EQ(plan.mirrors[0].method, passes::PartMethod::OwnColour);
+  EXPECT_TRUE(plan.mirrors[0].reflected.empty());
+  EXPECT_EQ(plan.mirrors[0].belowBudgetObjects, 1u);
+  EXPECT_FALSE(plan.search);
+  EXPECT_EQ(plan.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects"}));
+  EXPECT_STREQ(passes::partMethodName(plan.mirrors[0].method), "own-colour");
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {16, 12}, {}).mirrors[0].method, passes::PartMethod::RayCast)
+      << "13 px is over the default half pixel";
 }

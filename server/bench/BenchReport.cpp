@@ -293,6 +293,10 @@ std::string accuracyPlotScript(std::span<const AccuracyRow> rows, const std::str
             ", graph 1 nohead dashtype 2 linecolor rgb '#444444'\n";
   script += "set label 1 " + gnuplotString("ray-traced reference: " + number(referenceMilliseconds, 0) + " ms, error 0") + " at " +
             number(referenceMilliseconds, 3) + ", graph 0.25 rotate by 90 offset -1, 0 center noenhanced\n";
+  const bool onTheFloor = std::any_of(points.begin(), points.end(), [](const Point& p) { return p.row->mirrorMismatch < kMismatchFloor; });
+  if (onTheFloor)
+    script += "set label 2 " + gnuplotString("mismatch under " + number(kMismatchFloor, 4) + " (exact included) is drawn on this line") +
+              " at graph 0.99, first " + number(kMismatchFloor, 6) + " right offset 0, 0.8 font ',8' textcolor rgb '#444444' noenhanced\n";
   const std::string plot =
       "plot $front using 1:2 with linespoints linewidth 2 pointtype 7 pointsize 1.6 linecolor rgb '#d62728' title 'Pareto front', \\\n"
       "     $settings using 1:2 with points pointtype 7 pointsize 1 linecolor rgb '#1f77b4' title 'setting', \\\n"

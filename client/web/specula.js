@@ -352,7 +352,7 @@
       tessellation.inputTriangles
         ? `tessellation: ${tessellation.inputTriangles} → ${tessellation.finishedTriangles} triangles · ${tessellation.midpointSearches} midpoint searches${tessellation.capped ? ' · CAPPED' : ''}`
         : 'tessellation: off or nothing to split',
-      `plan: ${plan.length} mirror parts (${plan.filter((part) => part.method === 'ray-cast').length} ray-cast, ${plan.filter((part) => part.method === 'own-colour').length} own colour, ${plan.filter((part) => part.facesAway).length} facing away) · drew ${sum('searchedObjects')} objects, ${sum('searchedVertices')} vertices · left out ${sum('culledObjects')} objects, ${sum('culledVertices')} vertices, ${sum('belowBudgetObjects')} objects under the error budget · ${sum('uncoveredRayCast')} uncovered px ray-cast`,
+      `plan: ${plan.length} mirror parts (${plan.filter((part) => part.method === 'ray-cast').length} ray-cast, ${plan.filter((part) => part.method === 'own-colour').length} own colour, ${plan.filter((part) => part.method === 'environment-map').length} environment map, ${plan.filter((part) => part.facesAway).length} facing away) · drew ${sum('searchedObjects')} objects, ${sum('searchedVertices')} vertices · left out ${sum('culledObjects')} objects, ${sum('culledVertices')} vertices, ${sum('belowBudgetObjects')} objects under the error budget · ${sum('uncoveredRayCast')} uncovered px ray-cast`,
       `${(f.jpegBytes / 1024).toFixed(1)} KB · ${f.skippedFrames || 0} skipped · scene ${(f.sceneTimeMs / 1000).toFixed(2)} s`,
     ];
     overlay.textContent = lines.join('\n');

@@ -99,6 +99,7 @@ const char* methodWords(passes::PartMethod method) {
     case passes::PartMethod::VirtualObjects: return "searched";
     case passes::PartMethod::RayCast: return "ray-cast";
     case passes::PartMethod::OwnColour: return "own colour, drew";
+    case passes::PartMethod::EnvironmentMap: return "environment map of";
   }
   return "?";
 }

@@ -98,8 +98,11 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
   prepare(gl, frame.settings.environmentMapSize);
   gl.Disable(GL_CULL_FACE);  // open meshes are seen from both sides
   gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // no seams where a lookup straddles two faces
+  // The environment-map method serves every mirror; otherwise the planner picked it for some.
+  const bool everyMirror = frame.settings.method == ReflectionMethod::EnvironmentMap;
   for (const PlannedMirror& planned : frame.plan.mirrors) {
     const MirrorSlots* mirror = planned.slots;
+    if (!everyMirror && planned.method != PartMethod::EnvironmentMap) continue;
     // One cube per mirror, looked up from each of its parts' layers.
     if (mirror->part == 0) capture(frame, planned, mirrorCentre(frame, mirror->mirrorObject));
 
@@ -126,6 +129,8 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
     setGBufferPixelMapping(lookup_, resources);
     lookup_.set("eyePosition", frame.pose.camera.eye);
     lookup_.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
+    lookup_.set("environmentReach", everyMirror ? 0.0f : planned.environmentReach);
+    lookup_.set("errorBudget", frame.settings.errorBudgetPixels);
     gl.BindVertexArray(emptyVertexArray_.id());
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
   }

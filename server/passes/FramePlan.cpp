@@ -54,6 +54,7 @@ const char* partMethodName(PartMethod method) {
     case PartMethod::VirtualObjects: return "virtual-objects";
     case PartMethod::RayCast: return "ray-cast";
     case PartMethod::OwnColour: return "own-colour";
+    case PartMethod::EnvironmentMap: return "environment-map";
   }
   return "virtual-objects";
 }
@@ -65,6 +66,15 @@ double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, g
   if (distance <= radius) return framePixels;
   const double pixels = projectedRadius(radius, distance, focalPixels(camera, frameSize));
   return std::min(framePixels, glm::pi<double>() * pixels * pixels);
+}
+
+double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, double nearestObject, const math::Camera& camera,
+                           glm::ivec2 frameSize, int faceSize) {
+  const double capture = 2.0 * mirror.radius();  // from the capture point to any point of the mirror
+  if (mirror.empty() || !std::isfinite(curvatureRadius) || nearestObject <= 2.0 * capture)
+    return std::numeric_limits<double>::infinity();
+  const double parallax = capture / (nearestObject - capture), texel = 2.0 / faceSize;
+  return focalPixels(camera, frameSize) * 0.5 * curvatureRadius * (parallax + texel);
 }
 
 double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds& object, const math::Camera& camera,
@@ -115,6 +125,24 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
         planned.reflected.push_back(&range);
       }
     }
+    // Everything it reflects far away: a cube map serves most of its pixels within the budget (those
+    // seen within 60° of its normal, at least), the rest are ray-cast. One part that cannot meet its
+    // own rays: the cube is captured from outside it. It replaces searching, not a small mirror's
+    // ray cast, which is exact and costs per pixel, as the cube's lookup does.
+    if (method == PartMethod::VirtualObjects && !everything && search && settings.errorBudgetPixels > 0.0f && mirror.partCount == 1 &&
+        !mirror.seesItself && !planned.reflected.empty()) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const ReflectionSlotRange* range : planned.reflected)
+        nearest = std::min(nearest, static_cast<double>(glm::length(worldBounds[range->object].center() - mirrorBounds.center()) -
+                                                        worldBounds[range->object].radius()));
+      const double reach = environmentMapReach(mirrorBounds, worldCurvatureRadius(mirror.reach, mirrorToWorld), nearest, camera,
+                                               frameSize, settings.environmentMapSize);
+      const double eyeToMirror = glm::length(mirrorBounds.center() - camera.eye) - mirrorBounds.radius();
+      if (eyeToMirror > 0.0 && reach <= 0.5 * settings.errorBudgetPixels * eyeToMirror) {
+        planned.method = PartMethod::EnvironmentMap;
+        planned.environmentReach = static_cast<float>(reach);
+      }
+    }
     plan.mirrors.push_back(std::move(planned));
   }
   if (plan.mirrors.empty()) return plan;
@@ -133,6 +161,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   plan.tessellate = plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back("tessellation");
   plan.passes.push_back("virtual-objects");
+  // After the virtual objects: they ray-cast the pixels the cube map cannot serve.
+  if (std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
+                  [](const PlannedMirror& mirror) { return mirror.method == PartMethod::EnvironmentMap; }))
+    plan.passes.push_back("environment-map");
   return plan;
 }
 

@@ -17,9 +17,10 @@ enum class PartMethod {
   VirtualObjects,  // search every reflected vertex, tessellate, rasterize the virtual objects
   RayCast,         // cast each of its pixels' reflected rays against the objects' meshes
   OwnColour,       // smaller on screen than the error budget: its own colour and the background it reflects
+  EnvironmentMap,  // everything it reflects is far: a cube map from its centre, ray-cast where that is off by more than the budget
 };
 
-// "virtual-objects", "ray-cast" or "own-colour", as render, bench and the protocol name them.
+// "virtual-objects", "ray-cast", "own-colour" or "environment-map", as render, bench and the protocol name them.
 const char* partMethodName(PartMethod method);
 
 // A mirror part whose reflection is drawn this frame, and the reflected objects that can appear in it.
@@ -33,6 +34,9 @@ struct PlannedMirror {
   // Left out because their image in this convex part, or the whole part (OwnColour), is smaller on
   // screen than the error budget.
   std::size_t belowBudgetObjects = 0, belowBudgetVertices = 0;
+  // EnvironmentMap: how far its cube-map lookup moves a reflection, in pixels at one metre from the
+  // eye and at normal incidence; a pixel at distance z with incidence cosine c is off by reach / (c z).
+  float environmentReach = 0.0f;
 };
 
 struct FramePlan {
@@ -57,6 +61,16 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
 
 // Frame pixels the box's enclosing sphere covers, about (all of them when the eye is inside it).
 double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, glm::ivec2 frameSize);
+
+// The environment map's reach (PlannedMirror::environmentReach) for a mirror inside `mirror` with
+// largest radius of curvature `curvatureRadius` (world) whose reflected objects are all at least
+// `nearestObject` from the mirror's centre, looked up in cube faces of `faceSize` texels: the
+// capture point is up to 2 radii from the true reflection point (parallax), a texel off in
+// direction, and a direction error turns into a move on the mirror of curvature radius / 2 per
+// radian (divided by the incidence cosine across the plane of incidence). Infinite when no bound
+// holds (objects within three mirror radii, a flat mirror).
+double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, double nearestObject, const math::Camera& camera,
+                           glm::ivec2 frameSize, int faceSize);
 
 // An upper bound on the diameter in frame pixels of any image of `object` in a convex mirror part
 // inside `mirror` (world boxes), seen from `eye`: a flat mirror shows an object at least as far as

@@ -74,6 +74,21 @@ MirrorReach MirrorReach::ofMeshPart(const scene::Mesh& mesh, const scene::Mirror
       normalSum += v.normal;
     }
   }
+  // Per edge, the radius of the circle through its corners with their normals' turn: chord / (2 sin(turn / 2)).
+  float largestRadius = 0.0f;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    if (!inPart(t)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const scene::Vertex& a = mesh.vertices[mesh.indices[3 * t + k]];
+      const scene::Vertex& b = mesh.vertices[mesh.indices[3 * t + (k + 1) % 3]];
+      const float chord = glm::length(a.position - b.position);
+      if (chord <= 0.0f) continue;
+      const float halfTurnSine = 0.5f * glm::length(glm::normalize(a.normal) - glm::normalize(b.normal));
+      largestRadius = halfTurnSine > 1e-6f ? std::max(largestRadius, chord / (2.0f * halfTurnSine))
+                                           : std::numeric_limits<float>::infinity();
+    }
+  }
+  if (largestRadius > 0.0f) reach.largestCurvatureRadius = largestRadius;
   if (glm::length(normalSum) > 1e-6f) {
     reach.normalAxis = glm::normalize(normalSum);
     reach.normalCosine = 1.0f;
@@ -117,8 +132,16 @@ MirrorReach MirrorReach::ofQuadric(const scene::AnalyticShape& shape) {
   MirrorReach reach;
   reach.bounds.add(shape.center - shape.radii);
   reach.bounds.add(shape.center + shape.radii);
-  reach.inscribed = Ball{shape.center, std::min({shape.radii.x, shape.radii.y, shape.radii.z})};
+  const float smallest = std::min({shape.radii.x, shape.radii.y, shape.radii.z});
+  const float largest = std::max({shape.radii.x, shape.radii.y, shape.radii.z});
+  reach.inscribed = Ball{shape.center, smallest};
+  reach.largestCurvatureRadius = largest * largest / smallest;  // an ellipsoid's flattest point
   return reach;
+}
+
+float worldCurvatureRadius(const MirrorReach& reach, const glm::mat4& mirrorToWorld) {
+  if (!keepsAngles(mirrorToWorld)) return std::numeric_limits<float>::infinity();
+  return reach.largestCurvatureRadius * glm::length(glm::vec3(mirrorToWorld[0]));
 }
 
 bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object, const glm::vec3& eye) {

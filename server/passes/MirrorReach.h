@@ -3,6 +3,7 @@
 // space, so the frame plan can leave out reflected objects that cannot appear in the part. Every
 // test here is conservative: it answers "cannot appear" only when no reflected ray can reach.
 #include <cstddef>
+#include <limits>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -28,6 +29,10 @@ struct MirrorReach {
   // tangent plane where it starts, so it never enters the mirror or its shadow from the eye;
   // whatever lies in the ball's shadow (a subset of the mirror's) cannot appear in it.
   std::optional<Ball> inscribed;
+  // The largest radius of curvature over the part (object space): how far a reflection point moves
+  // on it for a turn of its normal, so how far a reflection moves for an error in its direction.
+  // Infinite where the part is flat anywhere (an edge whose corners' normals agree).
+  float largestCurvatureRadius = std::numeric_limits<float>::infinity();
 
   // Part `part` of a mesh mirror (`parts` from scene::MirrorParts::of on the same mesh); a closed
   // convex mesh also gets its inscribed ball.
@@ -40,6 +45,9 @@ struct MirrorReach {
 // `mirrorToWorld` and seen from `eye`: false only when it certainly cannot, because the object lies
 // behind every tangent plane of the part, or in the eye's shadow of the part's inscribed ball.
 bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object, const glm::vec3& eye);
+
+// The part's largest radius of curvature in world units: infinite unless `mirrorToWorld` keeps angles.
+float worldCurvatureRadius(const MirrorReach& reach, const glm::mat4& mirrorToWorld);
 
 // Whether the eye can see the part's front at all: false when it lies behind every tangent plane.
 bool facesEye(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const glm::vec3& eye);

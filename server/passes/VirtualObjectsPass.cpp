@@ -116,6 +116,9 @@ void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const Plann
   findUncovered_.set("layer", planned.slots->layer);
   findUncovered_.set("eyePosition", frame.pose.camera.eye);
   findUncovered_.set("boxCount", static_cast<int>(planned.reflected.size()));
+  findUncovered_.set("environmentPart", planned.method == PartMethod::EnvironmentMap ? 1 : 0);
+  findUncovered_.set("environmentReach", planned.environmentReach);
+  findUncovered_.set("errorBudget", frame.settings.errorBudgetPixels);
   gl.BindVertexArray(emptyVertexArray_.id());
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
   gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
@@ -282,6 +285,9 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
         drawObjects(frame, planned);
         if (frame.settings.rayCastUncovered) rayCastUncovered(frame, planned, partIndex);
         break;
+      case PartMethod::EnvironmentMap:  // the pixels the cube map cannot serve within the budget
+        rayCastUncovered(frame, planned, partIndex);
+        break;
     }
   }
 
@@ -296,6 +302,11 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
   gl.ActiveTexture(GL_TEXTURE0);
   composite_.set("reflection", 2);
+  composite_.set("gbufferPosition", 0);
+  composite_.set("gbufferNormal", 1);
+  setGBufferPixelMapping(composite_, frame.reflections);
+  composite_.set("eyePosition", frame.pose.camera.eye);
+  composite_.set("errorBudget", frame.settings.errorBudgetPixels);
   gl.BindVertexArray(emptyVertexArray_.id());
   gl.Enable(GL_SCISSOR_TEST);
   for (const PlannedMirror& planned : frame.plan.mirrors) {
@@ -305,6 +316,10 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
     scissorToMirror(mirror->mirrorObject);
     composite_.set("reflectedBackground", reflectivity * frame.scene.background);
+    // The environment map is chosen for one-part mirrors only: part 0 is the mirror.
+    const bool environment = planned.method == PartMethod::EnvironmentMap;
+    composite_.set("environmentLayer", environment ? mirror->layer : -1);
+    composite_.set("environmentReach", planned.environmentReach);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
   }
   gl.Disable(GL_SCISSOR_TEST);

@@ -1,5 +1,6 @@
 #include "render/Renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -150,7 +151,12 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }
-  if (plan.search && settings.rayCastUncovered) {
+  // The pixels ray-cast where virtual objects left gaps, or where a cube map could not serve them.
+  const bool listsPixels = std::any_of(plan.mirrors.begin(), plan.mirrors.end(), [&](const passes::PlannedMirror& mirror) {
+    return mirror.method == passes::PartMethod::EnvironmentMap ||
+           (mirror.method == passes::PartMethod::VirtualObjects && settings.rayCastUncovered);
+  });
+  if (listsPixels) {
     const std::vector<std::uint32_t> uncovered = virtualObjects_->readUncoveredCounts();
     for (std::size_t i = 0; i < uncovered.size() && i < result.plan.size(); ++i) result.plan[i].uncoveredRayCast = uncovered[i];
   }

@@ -1,6 +1,8 @@
 #version 430 core
 // The environment-map lookup for one mirror pixel: the eye ray reflected about the G-buffer's
-// normal there, looked up in the cube map captured from the mirror's centre.
+// normal there, looked up in the cube map captured from the mirror's centre; where the planner
+// chose it for a mirror among searched ones, only the pixels it serves within the error budget.
+#include "common/environment-bound.glsl"
 #include "common/gbuffer-texel.glsl"
 
 uniform sampler2DArray gbufferPosition;  // w > 0 on mirror texels
@@ -16,6 +18,7 @@ void main() {
   vec3 position, normal;
   // Another part of the mirror, or outside its (closed twin's) surface.
   if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, position, normal)) discard;
+  if (!environmentLookupHolds(position, normal, eyePosition)) discard;  // ray-cast by the virtual-objects pass
   vec3 reflected = reflect(normalize(position - eyePosition), normal);
   outColor = vec4(reflectivity * texture(environment, reflected).rgb, 1.0);
 }

@@ -5,6 +5,7 @@
 // a silhouette, rim or horizon, its triangles' flat approximation and widening can fall short of
 // it; those pixels are then ray-cast (ray-cast.frag) instead of showing the background. Rays that
 // meet no box (most of the sky in a mirror) would find nothing: they are not listed.
+#include "common/environment-bound.glsl"
 #include "common/gbuffer-texel.glsl"
 #include "virtual-objects/uncovered-pixels.glsl"
 
@@ -16,15 +17,18 @@ uniform sampler2DArray gbufferNormal;
 uniform int layer;
 uniform vec3 eyePosition;
 uniform int boxCount;
+// 1 on a part the environment map serves: list instead the pixels its lookup cannot serve.
+uniform int environmentPart;
 
 layout(std430, binding = 9) readonly buffer ReflectedBoxes {
   vec4 reflectedBox[];  // world bounds of each reflected object: low, high
 };
 
 void main() {
-  if (texelFetch(reflection, ivec2(gl_FragCoord.xy), 0).a > 0.0) return;
+  if (environmentPart == 0 && texelFetch(reflection, ivec2(gl_FragCoord.xy), 0).a > 0.0) return;
   vec3 surface, normal;
   if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, surface, normal)) return;
+  if (environmentPart != 0 && environmentLookupHolds(surface, normal, eyePosition)) return;
   vec3 inverseDirection = 1.0 / reflect(normalize(surface - eyePosition), normal);
   bool meetsSome = false;
   for (int i = 0; i < boxCount && !meetsSome; ++i) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -338,4 +339,58 @@ TEST(FramePlan, AMirrorNarrowerThanTheBudgetShowsItsOwnColour) {
   EXPECT_STREQ(passes::partMethodName(plan.mirrors[0].method), "own-colour");
   EXPECT_EQ(passes::planFrame(slots, pose, bounds, {16, 12}, {}).mirrors[0].method, passes::PartMethod::RayCast)
       << "13 px is over the default half pixel";
+}
+
+// A direction error turns into a move of curvature radius / 2 per radian on the mirror.
+TEST(FramePlan, TheEnvironmentMapReachFollowsParallaxTexelsAndCurvature) {
+  const math::Camera camera{{0.0f, 0.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};
+  math::Bounds mirror;
+  mirror.add(glm::vec3(-1.0f));
+  mirror.add(glm::vec3(1.0f));
+  const double focal = 240.0 / std::tan(glm::radians(20.0));
+  const double capture = 2.0 * mirror.radius();
+  EXPECT_NEAR(passes::environmentMapReach(mirror, 1.0, 800.0, camera, {640, 480}, 1024),
+              focal * 0.5 * (capture / (800.0 - capture) + 2.0 / 1024.0), 1e-6);
+  EXPECT_NEAR(passes::environmentMapReach(mirror, 2.0, 800.0, camera, {640, 480}, 1024),
+              2.0 * passes::environmentMapReach(mirror, 1.0, 800.0, camera, {640, 480}, 1024), 1e-6);
+  EXPECT_TRUE(std::isinf(passes::environmentMapReach(mirror, std::numeric_limits<double>::infinity(), 800.0, camera, {640, 480}, 1024)))
+      << "a flat mirror shows parallax undiminished";
+  EXPECT_TRUE(std::isinf(passes::environmentMapReach(mirror, 1.0, 2.0 * capture, camera, {640, 480}, 1024))) << "objects near the mirror";
+}
+
+TEST(FramePlan, AMirrorReflectingOnlyFarSurroundingsUsesTheEnvironmentMapWithinTheBudget) {
+  // checker-sphere without its floor in the mirror, and four 200 m boxes a kilometre away.
+  scene::Scene far = *scene::makeBuiltinScene("checker-sphere");
+  for (scene::SceneObject& object : far.objects)
+    if (!object.mirror) object.reflected = false;
+  for (const glm::vec3 centre : {glm::vec3(0, 0, -1000), glm::vec3(1000, 30, 0), glm::vec3(150, -90, 1000), glm::vec3(-1000, -60, 150)})
+    far = withBox(far, centre, 200.0f);
+  passes::ReflectionSettings settings;
+  settings.errorBudgetPixels = 2.0f;
+  settings.environmentMapSize = 1024;
+  const scene::ScenePose pose = scene::ScenePose::at(far, 0.0);
+  const auto bounds = worldBounds(far, pose);
+  const auto slots = passes::ReflectionSlots::forScene(far);
+  const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, {640, 480}, settings);
+  ASSERT_EQ(plan.mirrors.size(), 1u);
+  EXPECT_EQ(plan.mirrors[0].method, passes::PartMethod::EnvironmentMap);
+  EXPECT_GT(plan.mirrors[0].environmentReach, 0.0f);
+  EXPECT_EQ(plan.mirrors[0].reflected.size(), 4u) << "the cube captures what the mirror reflects";
+  EXPECT_FALSE(plan.search);
+  EXPECT_EQ(plan.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects", "environment-map"}));
+
+  passes::ReflectionSettings exact = settings;
+  exact.errorBudgetPixels = 0.0f;
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {640, 480}, exact).mirrors[0].method, passes::PartMethod::VirtualObjects);
+  passes::ReflectionSettings coarse = settings;
+  coarse.environmentMapSize = 64;  // a texel turns the reflection by more than the budget allows
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {640, 480}, coarse).mirrors[0].method, passes::PartMethod::VirtualObjects);
+
+  // One box near the mirror brings the parallax back.
+  const scene::Scene near = withBox(far, {3.0f, 0.0f, 0.0f}, 0.5f);
+  const scene::ScenePose nearPose = scene::ScenePose::at(near, 0.0);
+  EXPECT_EQ(passes::planFrame(passes::ReflectionSlots::forScene(near), nearPose, worldBounds(near, nearPose), {640, 480}, settings)
+                .mirrors[0]
+                .method,
+            passes::PartMethod::VirtualObjects);
 }

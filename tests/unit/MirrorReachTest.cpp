@@ -114,3 +114,19 @@ TEST(MirrorReach, NoReflectedRayOfASphereMeetsAnObjectItLeftOut) {
   }
   EXPECT_GT(leftOut, 20) << "too few objects in the shadow to check the bound";
 }
+
+TEST(MirrorReach, TheLargestRadiusOfCurvatureIsTheSpheresTheEllipsoidsFlattestAndInfiniteOnAFlatPart) {
+  const scene::Mesh sphere = scene::primitives::uvSphere("sphere", 2.0f, 64, 32);
+  const scene::MirrorParts sphereParts = scene::MirrorParts::of(sphere, scene::MirrorCurvature::Convex);
+  EXPECT_NEAR(passes::MirrorReach::ofMeshPart(sphere, sphereParts, 0, true).largestCurvatureRadius, 2.0f, 0.02f);
+  const scene::Mesh box = scene::primitives::box("box", glm::vec3(1.0f));
+  const scene::MirrorParts boxParts = scene::MirrorParts::of(box, scene::MirrorCurvature::Mixed);
+  EXPECT_TRUE(std::isinf(passes::MirrorReach::ofMeshPart(box, boxParts, 0, false).largestCurvatureRadius));
+  scene::AnalyticShape ellipsoid;
+  ellipsoid.radii = {3.0f, 2.0f, 1.0f};
+  const passes::MirrorReach exact = passes::MirrorReach::ofQuadric(ellipsoid);
+  EXPECT_FLOAT_EQ(exact.largestCurvatureRadius, 9.0f);
+  EXPECT_FLOAT_EQ(passes::worldCurvatureRadius(exact, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))), 18.0f);
+  EXPECT_TRUE(std::isinf(passes::worldCurvatureRadius(exact, glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 1.0f)))))
+      << "a stretch changes curvature unevenly";
+}

@@ -1,5 +1,6 @@
 #include "passes/EnvironmentMapPass.h"
 
+#include <algorithm>
 #include <array>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -54,7 +55,7 @@ void EnvironmentMapPass::prepare(const gl::GlApi& gl, int faceSize) {
   gl.BindTexture(GL_TEXTURE_2D, 0);
 }
 
-void EnvironmentMapPass::capture(const FrameContext& frame, const PlannedMirror& mirror, const glm::vec3& centre) const {
+void EnvironmentMapPass::capture(const FrameContext& frame, std::size_t mirrorObject, const glm::vec3& centre) const {
   const gl::GlApi& gl = frame.gl;
   // Near enough for objects touching the mirror, far enough for everything in the scene.
   math::Bounds all;
@@ -82,12 +83,22 @@ void EnvironmentMapPass::capture(const FrameContext& frame, const PlannedMirror&
                             cube_.id(), 0);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     capture_.set("worldToClip", projection * glm::lookAt(centre, centre + kCubeFaces[face].forward, kCubeFaces[face].up));
-    for (const ReflectionSlotRange* range : mirror.reflected) {
-      const scene::SceneObject& object = frame.scene.objects[range->object];
-      capture_.set("objectToWorld", frame.pose.objectToWorld[range->object]);
-      capture_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[range->object]));
-      setMaterial(capture_, frame.scene.materials[object.material]);
-      frame.meshes.draw(object.mesh);
+    // What any of the mirror's parts reflects (each part leaves out what it cannot show).
+    for (const PlannedMirror& part : frame.plan.mirrors) {
+      if (part.slots->mirrorObject != mirrorObject) continue;
+      for (const ReflectionSlotRange* range : part.reflected) {
+        const bool drawnForAnEarlierPart = std::any_of(frame.plan.mirrors.data(), &part, [&](const PlannedMirror& earlier) {
+          return earlier.slots->mirrorObject == mirrorObject &&
+                 std::any_of(earlier.reflected.begin(), earlier.reflected.end(),
+                             [&](const ReflectionSlotRange* drawn) { return drawn->object == range->object; });
+        });
+        if (drawnForAnEarlierPart) continue;
+        const scene::SceneObject& object = frame.scene.objects[range->object];
+        capture_.set("objectToWorld", frame.pose.objectToWorld[range->object]);
+        capture_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[range->object]));
+        setMaterial(capture_, frame.scene.materials[object.material]);
+        frame.meshes.draw(object.mesh);
+      }
     }
   }
 }
@@ -104,7 +115,7 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
     const MirrorSlots* mirror = planned.slots;
     if (!everyMirror && planned.method != PartMethod::EnvironmentMap) continue;
     // One cube per mirror, looked up from each of its parts' layers.
-    if (mirror->part == 0) capture(frame, planned, mirrorCentre(frame, mirror->mirrorObject));
+    if (mirror->part == 0) capture(frame, mirror->mirrorObject, mirrorCentre(frame, mirror->mirrorObject));
 
     frame.target.bind();
     gl.Enable(GL_FRAMEBUFFER_SRGB);

@@ -26,7 +26,7 @@ class EnvironmentMapPass final : public Pass {
   // (Re)allocates the cube map and its depth when the face size changes.
   void prepare(const gl::GlApi& gl, int faceSize);
   // Renders the six faces seen from `centre`: the mirror's reflected objects on the background.
-  void capture(const FrameContext& frame, const PlannedMirror& mirror, const glm::vec3& centre) const;
+  void capture(const FrameContext& frame, std::size_t mirrorObject, const glm::vec3& centre) const;
 
   gl::ShaderProgram capture_;  // the scene shaders, from the cube's centre
   gl::ShaderProgram lookup_;   // full-screen, under the mirror's stencil

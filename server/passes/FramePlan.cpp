@@ -102,7 +102,7 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     const math::Bounds& mirrorBounds = worldBounds[mirror.mirrorObject];
     const double pixels = projectedPixels(mirrorBounds, camera, frameSize);
     const bool search = settings.method == ReflectionMethod::Search;
-    PartMethod method = PartMethod::VirtualObjects;
+    PartMethod method = settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
     // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.
     if (!everything && search && 2.0 * std::sqrt(pixels / glm::pi<double>()) < settings.errorBudgetPixels)
       method = PartMethod::OwnColour;

@@ -152,10 +152,11 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     result.plan.push_back(summary);
   }
   // The pixels ray-cast where virtual objects left gaps, or where a cube map could not serve them.
-  const bool listsPixels = std::any_of(plan.mirrors.begin(), plan.mirrors.end(), [&](const passes::PlannedMirror& mirror) {
-    return mirror.method == passes::PartMethod::EnvironmentMap ||
-           (mirror.method == passes::PartMethod::VirtualObjects && settings.rayCastUncovered);
-  });
+  const bool listsPixels = std::find(plan.passes.begin(), plan.passes.end(), "virtual-objects") != plan.passes.end() &&
+                           std::any_of(plan.mirrors.begin(), plan.mirrors.end(), [&](const passes::PlannedMirror& mirror) {
+                             return mirror.method == passes::PartMethod::EnvironmentMap ||
+                                    (mirror.method == passes::PartMethod::VirtualObjects && settings.rayCastUncovered);
+                           });
   if (listsPixels) {
     const std::vector<std::uint32_t> uncovered = virtualObjects_->readUncoveredCounts();
     for (std::size_t i = 0; i < uncovered.size() && i < result.plan.size(); ++i) result.plan[i].uncoveredRayCast = uncovered[i];

@@ -1,7 +1,10 @@
 #include "passes/VirtualObjectsPass.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include <glm/gtx/component_wise.hpp>
 
 #include "math/Transform.h"
 #include "passes/ReflectionResources.h"
@@ -161,6 +164,15 @@ void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::Sha
   program.set("normalToWorld", math::normalMatrix(objectToWorld));
   program.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
   program.set("minDistance", bvh.minDistance);
+  // The G-buffer point's own error: half a texel where pixel centres fall between texels, and the
+  // rounding of half floats at the mirror's largest coordinate.
+  const float pixelAngle = 2.0f * std::tan(glm::radians(frame.pose.camera.fovYDegrees) * 0.5f) / static_cast<float>(frame.target.height());
+  const float texelsPerPixel = resources.texelsPerPixel();
+  const bool texelPerPixel = std::abs(texelsPerPixel - 1.0f) < 1e-3f;  // pixel centres on texel centres: no interpolation
+  program.set("liftPerMetre", texelPerPixel ? 0.0f : 0.5f * pixelAngle / texelsPerPixel);
+  const math::Bounds& mirrorBounds = frame.worldBounds[mirror.mirrorObject];
+  const float largestCoordinate = glm::compMax(glm::max(glm::abs(mirrorBounds.low), glm::abs(mirrorBounds.high)));
+  program.set("lift", frame.plan.gbufferPrecision == GBufferPrecision::Float16 ? largestCoordinate / 2048.0f : 0.0f);
   program.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
   setSceneLighting(program, frame.scene);
   setMaterial(program, frame.scene.materials[object.material]);

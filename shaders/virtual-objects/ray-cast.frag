@@ -21,6 +21,11 @@ uniform mat3 normalToWorld;
 uniform mat4 worldToClip;     // the virtual objects' projection (far plane pushed out)
 uniform float minDistance;    // object space: nearer hits are the surface the ray starts on
 uniform float reflectivity;  // the mirror's
+// How far the G-buffer point may lie off the true surface: per metre from the eye (bilinear between
+// texels that are not at the pixel centre) plus a constant (RGBA16F rounding). The ray starts that
+// far out on its own side, or a mirror seeing itself would meet its own surface where it starts.
+uniform float liftPerMetre;
+uniform float lift;
 
 layout(std430, binding = 6) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
@@ -44,6 +49,7 @@ void main() {
   float distance;
   uint triangle;
   vec2 barycentric;
+  surface += (lift + liftPerMetre * length(surface - eyePosition)) * sign(dot(reflected, normal)) * normal;
   vec3 origin = (worldToObject * vec4(surface, 1.0)).xyz, direction = mat3(worldToObject) * reflected;
   // Most rays of a part miss most objects: the root box alone turns them away, before the traversal
   // sets up its stack.

@@ -56,8 +56,9 @@ class VirtualObjectsPass final : public Pass {
   // Casts the part's reflected rays against one object's mesh (the mirror's own where it sees itself)
   // and draws the nearest hits at their depth.
   void rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t object) const;
-  // Ray-casts the part's pixels its virtual objects left uncovered against its reflected objects;
-  // their number goes to uncoveredCounts_[partIndex].
+  // Ray-casts against the part's reflected objects the pixels its virtual objects left uncovered, or
+  // on an environment-map part those its cube map cannot serve within the error budget; their
+  // number goes to uncoveredCounts_[partIndex].
   void rayCastUncovered(const FrameContext& frame, const PlannedMirror& planned, std::size_t partIndex);
   // Uses `program` (ray-cast.frag) with the uniforms and buffers of one object seen in the part.
   void prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror,

@@ -121,72 +121,80 @@ TEST(Planner, ObjectsWhoseImageIsUnderTheErrorBudgetAreLeftOutAndMoveAtMostAPixe
                std::to_string(distance * std::sin(angle)) + ", " + std::to_string(0.5f * static_cast<float>(i % 4)) + ", " +
                std::to_string(distance * std::cos(angle)) + "]}";
   }
-  const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#000000",
-    "camera": {"eye": [1, 3, 3.5], "target": [0, -0.3, 0], "fov": 40},
-    "meshes": [{"name": "mirror-sphere", "primitive": {"type": "sphere", "radius": 1, "slices": 64, "stacks": 32}},
-      {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
-      {"name": "beacon", "primitive": {"type": "sphere", "radius": 0.008, "slices": 8, "stacks": 4}}],
-    "materials": [{"name": "mirror", "color": "#000000", "reflectivity": 1},
-      {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
-      {"name": "red", "color": "#ff2020", "unlit": true}],
-    "objects": [{"name": "mirror-sphere", "mesh": "mirror-sphere", "material": "mirror", "reflected": false,
-                 "mirror": {"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}}},
-      {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]})" +
-                           beacons + R"(],
-    "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
-  ASSERT_TRUE(scene);
-  const PlannedAndEverything frames = renderBoth(scene);
-  ASSERT_EQ(frames.needed.plan.size(), 1u);
-  const render::MirrorPlanSummary& planned = frames.needed.plan[0];
-  const std::size_t beaconVertices = scene->meshes[scene->objects[2].mesh].vertices.size();
-  EXPECT_EQ(planned.belowBudgetObjects, static_cast<std::size_t>(kBeacons));
-  EXPECT_EQ(planned.belowBudgetVertices, kBeacons * beaconVertices);
-  EXPECT_EQ(planned.searchedObjects, 1u) << "the floor";
-  EXPECT_EQ(frames.needed.search.searched + planned.belowBudgetVertices, frames.everything.search.searched);
-  EXPECT_LE(frames.differingPixels, static_cast<std::size_t>(kBeacons));
-  std::printf("%d beacons under the budget: %zu of %u searches left out, %zu pixels differ\n", kBeacons,
-              planned.belowBudgetVertices, frames.everything.search.searched, frames.differingPixels);
+  // The declared sphere, and the same mesh without it: the rule reads bounds only.
+  for (const std::string mirror : {R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})",
+                                   R"({"curvature": "convex"})"}) {
+    const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#000000",
+      "camera": {"eye": [1, 3, 3.5], "target": [0, -0.3, 0], "fov": 40},
+      "meshes": [{"name": "mirror-sphere", "primitive": {"type": "sphere", "radius": 1, "slices": 64, "stacks": 32}},
+        {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
+        {"name": "beacon", "primitive": {"type": "sphere", "radius": 0.008, "slices": 8, "stacks": 4}}],
+      "materials": [{"name": "mirror", "color": "#000000", "reflectivity": 1},
+        {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
+        {"name": "red", "color": "#ff2020", "unlit": true}],
+      "objects": [{"name": "mirror-sphere", "mesh": "mirror-sphere", "material": "mirror", "reflected": false,
+                   "mirror": )" + mirror + R"(},
+        {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]})" +
+                             beacons + R"(],
+      "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
+    ASSERT_TRUE(scene);
+    const PlannedAndEverything frames = renderBoth(scene);
+    ASSERT_EQ(frames.needed.plan.size(), 1u);
+    const render::MirrorPlanSummary& planned = frames.needed.plan[0];
+    const std::size_t beaconVertices = scene->meshes[scene->objects[2].mesh].vertices.size();
+    EXPECT_EQ(planned.belowBudgetObjects, static_cast<std::size_t>(kBeacons));
+    EXPECT_EQ(planned.belowBudgetVertices, kBeacons * beaconVertices);
+    EXPECT_EQ(planned.searchedObjects, 1u) << "the floor";
+    EXPECT_EQ(frames.needed.search.searched + planned.belowBudgetVertices, frames.everything.search.searched);
+    EXPECT_LE(frames.differingPixels, static_cast<std::size_t>(kBeacons));
+    std::printf("%d beacons under the budget: %zu of %u searches left out, %zu pixels differ\n", kBeacons,
+                planned.belowBudgetVertices, frames.everything.search.searched, frames.differingPixels);
+  }
 }
 
 // A mirror ball reflecting only mountains a kilometre away: within a 1 px budget a 1024-texel cube
 // map serves it, except towards its silhouette, where the lookup's error grows past the budget and
 // the pixels are ray-cast; the picture stays as close to the ray tracer as the searched one.
 TEST(Planner, AMirrorReflectingOnlyFarMountainsUsesTheEnvironmentMapAndRayCastsItsRim) {
-  const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
-    "camera": {"eye": [1.0, 1.5, 5.7], "target": [0, 0, 0], "fov": 40},
-    "meshes": [{"name": "ball", "primitive": {"type": "sphere", "radius": 1, "slices": 128, "stacks": 64}},
-      {"name": "mountain", "primitive": {"type": "box", "size": [200, 120, 200]}}],
-    "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9}, {"name": "red", "color": "#d02020"},
-      {"name": "green", "color": "#20b040"}, {"name": "blue", "color": "#3050e0"}, {"name": "ground", "color": "#806040"}],
-    "objects": [{"name": "ball", "mesh": "ball", "material": "chrome",
-                 "mirror": {"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}}},
-      {"name": "north", "mesh": "mountain", "material": "red", "translation": [0, 0, -1000]},
-      {"name": "east", "mesh": "mountain", "material": "green", "translation": [1000, 30, 0]},
-      {"name": "south", "mesh": "mountain", "material": "blue", "translation": [150, -90, 1000]},
-      {"name": "west", "mesh": "mountain", "material": "ground", "translation": [-1000, -60, 150]}],
-    "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
-  ASSERT_TRUE(scene);
-  specula::testing::Rig rig = specula::testing::makeRig(scene);
-  ASSERT_TRUE(rig.renderer);
-  const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
-  passes::ReflectionSettings settings;
-  settings.errorBudgetPixels = 1.0f;
-  settings.environmentMapSize = 1024;
-  auto planned = rig.renderer->render(pose, 640, 480, settings);
-  ASSERT_TRUE(planned) << planned.error();
-  ASSERT_EQ(planned->plan.size(), 1u);
-  EXPECT_EQ(planned->plan[0].method, passes::PartMethod::EnvironmentMap);
-  EXPECT_EQ(planned->search.searched, 0u);
-  EXPECT_GT(planned->plan[0].uncoveredRayCast, 0u) << "the rim, where the lookup would be off by more than the budget";
-  settings.plan = passes::PlanScope::Everything;
-  auto searched = rig.renderer->render(pose, 640, 480, settings);
-  ASSERT_TRUE(searched) << searched.error();
-  const auto cube = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
-  const auto search = specula::testing::mismatchAgainstRayTracer(scene, pose, *searched);
-  std::printf("far mountains: environment map %.3f %%, %zu rim pixels ray-cast; searched %.3f %% of %zu mirror pixels\n",
-              100.0 * cube.share, planned->plan[0].uncoveredRayCast, 100.0 * search.share, search.mirrorPixels);
-  EXPECT_GT(cube.mirrorPixels, 10000u);
-  EXPECT_LE(cube.share, search.share + 0.002);
+  // The declared sphere, and the same mesh without it (curvature from its edges, not the quadric).
+  for (const std::string mirror : {R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})",
+                                   R"({"curvature": "convex"})"}) {
+    const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
+      "camera": {"eye": [1.0, 1.5, 5.7], "target": [0, 0, 0], "fov": 40},
+      "meshes": [{"name": "ball", "primitive": {"type": "sphere", "radius": 1, "slices": 128, "stacks": 64}},
+        {"name": "mountain", "primitive": {"type": "box", "size": [200, 120, 200]}}],
+      "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9}, {"name": "red", "color": "#d02020"},
+        {"name": "green", "color": "#20b040"}, {"name": "blue", "color": "#3050e0"}, {"name": "ground", "color": "#806040"}],
+      "objects": [{"name": "ball", "mesh": "ball", "material": "chrome",
+                   "mirror": )" + mirror + R"(},
+        {"name": "north", "mesh": "mountain", "material": "red", "translation": [0, 0, -1000]},
+        {"name": "east", "mesh": "mountain", "material": "green", "translation": [1000, 30, 0]},
+        {"name": "south", "mesh": "mountain", "material": "blue", "translation": [150, -90, 1000]},
+        {"name": "west", "mesh": "mountain", "material": "ground", "translation": [-1000, -60, 150]}],
+      "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
+    ASSERT_TRUE(scene);
+    specula::testing::Rig rig = specula::testing::makeRig(scene);
+    ASSERT_TRUE(rig.renderer);
+    const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+    passes::ReflectionSettings settings;
+    settings.errorBudgetPixels = 1.0f;
+    settings.environmentMapSize = 1024;
+    auto planned = rig.renderer->render(pose, 640, 480, settings);
+    ASSERT_TRUE(planned) << planned.error();
+    ASSERT_EQ(planned->plan.size(), 1u);
+    EXPECT_EQ(planned->plan[0].method, passes::PartMethod::EnvironmentMap);
+    EXPECT_EQ(planned->search.searched, 0u);
+    EXPECT_GT(planned->plan[0].uncoveredRayCast, 0u) << "the rim, where the lookup would be off by more than the budget";
+    settings.plan = passes::PlanScope::Everything;
+    auto searched = rig.renderer->render(pose, 640, 480, settings);
+    ASSERT_TRUE(searched) << searched.error();
+    const auto cube = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
+    const auto search = specula::testing::mismatchAgainstRayTracer(scene, pose, *searched);
+    std::printf("far mountains, mirror %s: environment map %.3f %%, %zu rim pixels ray-cast; searched %.3f %% of %zu mirror pixels\n",
+                mirror.c_str(), 100.0 * cube.share, planned->plan[0].uncoveredRayCast, 100.0 * search.share, search.mirrorPixels);
+    EXPECT_GT(cube.mirrorPixels, 10000u);
+    EXPECT_LE(cube.share, search.share + 0.002);
+  }
 }
 
 // A mirror cube split into its six flat faces: the three the camera cannot see search nothing, the

@@ -108,20 +108,11 @@ void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const Plann
   gl.DrawBuffers(1, &noColour);
   gl.DepthMask(GL_FALSE);
   gl.DepthFunc(GL_ALWAYS);
-  findUncovered_.use();
-  gl.ActiveTexture(GL_TEXTURE2);
-  gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
-  gl.ActiveTexture(GL_TEXTURE0);
-  findUncovered_.set("reflection", 2);
-  findUncovered_.set("gbufferPosition", 0);
-  findUncovered_.set("gbufferNormal", 1);
-  setGBufferPixelMapping(findUncovered_, frame.reflections);
+  useReadingReflection(findUncovered_, frame);
   findUncovered_.set("layer", planned.slots->layer);
-  findUncovered_.set("eyePosition", frame.pose.camera.eye);
   findUncovered_.set("boxCount", static_cast<int>(planned.reflected.size()));
   findUncovered_.set("environmentPart", planned.method == PartMethod::EnvironmentMap ? 1 : 0);
   findUncovered_.set("environmentReach", planned.environmentReach);
-  findUncovered_.set("errorBudget", frame.settings.errorBudgetPixels);
   gl.BindVertexArray(emptyVertexArray_.id());
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
   gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
@@ -139,6 +130,20 @@ void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const Plann
     gl.DrawArraysIndirect(GL_POINTS, nullptr);
   }
   gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+}
+
+void VirtualObjectsPass::useReadingReflection(const gl::ShaderProgram& program, const FrameContext& frame) const {
+  const gl::GlApi& gl = frame.gl;
+  program.use();
+  gl.ActiveTexture(GL_TEXTURE2);
+  gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
+  gl.ActiveTexture(GL_TEXTURE0);
+  program.set("reflection", 2);
+  program.set("gbufferPosition", 0);  // the G-buffer textures are bound by execute()
+  program.set("gbufferNormal", 1);
+  setGBufferPixelMapping(program, frame.reflections);
+  program.set("eyePosition", frame.pose.camera.eye);
+  program.set("errorBudget", frame.settings.errorBudgetPixels);
 }
 
 void VirtualObjectsPass::rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t objectIndex) const {
@@ -309,16 +314,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.Disable(GL_DEPTH_TEST);
   gl.Enable(GL_BLEND);
   gl.BlendFunc(GL_ONE, GL_ONE);
-  composite_.use();
-  gl.ActiveTexture(GL_TEXTURE2);
-  gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
-  gl.ActiveTexture(GL_TEXTURE0);
-  composite_.set("reflection", 2);
-  composite_.set("gbufferPosition", 0);
-  composite_.set("gbufferNormal", 1);
-  setGBufferPixelMapping(composite_, frame.reflections);
-  composite_.set("eyePosition", frame.pose.camera.eye);
-  composite_.set("errorBudget", frame.settings.errorBudgetPixels);
+  useReadingReflection(composite_, frame);
   gl.BindVertexArray(emptyVertexArray_.id());
   gl.Enable(GL_SCISSOR_TEST);
   for (const PlannedMirror& planned : frame.plan.mirrors) {

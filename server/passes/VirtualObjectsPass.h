@@ -60,6 +60,9 @@ class VirtualObjectsPass final : public Pass {
   // on an environment-map part those its cube map cannot serve within the error budget; their
   // number goes to uncoveredCounts_[partIndex].
   void rayCastUncovered(const FrameContext& frame, const PlannedMirror& planned, std::size_t partIndex);
+  // Uses `program`, which reads the reflection buffer and the G-buffer at each pixel and may test the
+  // environment-map bound there (the uncovered-pixel list, the composite).
+  void useReadingReflection(const gl::ShaderProgram& program, const FrameContext& frame) const;
   // Uses `program` (ray-cast.frag) with the uniforms and buffers of one object seen in the part.
   void prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror,
                       std::size_t object) const;

@@ -50,11 +50,9 @@ void main() {
   uint triangle;
   vec2 barycentric;
   surface += (lift + liftPerMetre * length(surface - eyePosition)) * sign(dot(reflected, normal)) * normal;
-  vec3 origin = (worldToObject * vec4(surface, 1.0)).xyz, direction = mat3(worldToObject) * reflected;
-  // Most rays of a part miss most objects: the root box alone turns them away, before the traversal
-  // sets up its stack.
-  if (!bvhBoxHit(bvhNodes[0], origin, 1.0 / direction, minDistance, 1e30)) discard;
-  if (!intersectBvh(origin, direction, minDistance, 1e30, distance, triangle, barycentric)) discard;
+  if (!intersectBvh((worldToObject * vec4(surface, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, 1e30, distance,
+                    triangle, barycentric))
+    discard;
   uint i0 = meshIndex[3u * triangle], i1 = meshIndex[3u * triangle + 1u], i2 = meshIndex[3u * triangle + 2u];
   vec3 weights = vec3(1.0 - barycentric.x - barycentric.y, barycentric);
   vec3 position = weights.x * attribute3(i0, 0u) + weights.y * attribute3(i1, 0u) + weights.z * attribute3(i2, 0u);

@@ -50,14 +50,15 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
 }
 
 std::vector<OptionSpec> planOptions() {
-  const passes::ReflectionSettings defaults;
   return {
       {"plan", "SCOPE",
-       "needed (leave out mirrors out of view and objects a mirror cannot show; ray-cast small mirrors) | everything "
-       "(planner off)",
+       "needed (leave out mirrors out of view and objects a mirror cannot show; ray-cast mirrors where that is cheaper) | "
+       "everything (planner off)",
        "needed"},
-      {"ray-cast-pixels", "N", "a mirror covering at most N pixels (projected bounds) ray-casts its pixels instead of searching; 0 = never",
-       std::to_string(defaults.rayCastPixels)},
+      {"ray-cast", "WHEN",
+       "cheaper (a mirror part casts its pixels' reflected rays instead of searching when the planner's cost model, "
+       "measured on llvmpipe, predicts that cheaper) | never (search every part) | always",
+       "cheaper"},
       {"error-budget", "PX",
        "pixels the planner may move a reflection by: leaves out objects whose image in a convex part is smaller, shows a "
        "smaller mirror in its own colour; 0 = only exact decisions",
@@ -74,9 +75,11 @@ Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& 
   if (plan == "needed") settings.plan = passes::PlanScope::Needed;
   else if (plan == "everything") settings.plan = passes::PlanScope::Everything;
   else return Error{"--plan expects needed or everything, got '" + plan + "'"};
-  auto rayCastPixels = options.integer("ray-cast-pixels", 0, passes::kMaxRayCastPixels);
-  if (!rayCastPixels) return Error{rayCastPixels.error()};
-  settings.rayCastPixels = *rayCastPixels;
+  const std::string rayCast = options.text("ray-cast");
+  if (rayCast == "cheaper") settings.rayCast = passes::RayCastRule::WhenCheaper;
+  else if (rayCast == "never") settings.rayCast = passes::RayCastRule::Never;
+  else if (rayCast == "always") settings.rayCast = passes::RayCastRule::Always;
+  else return Error{"--ray-cast expects cheaper, never or always, got '" + rayCast + "'"};
   auto budget = options.number("error-budget");
   if (!budget || !(*budget >= 0.0 && *budget <= passes::kMaxErrorBudgetPixels))
     return Error{"--error-budget expects pixels in [0, 16], got '" + options.text("error-budget") + "'"};

@@ -15,7 +15,7 @@ std::vector<OptionSpec> tessellationOptions();
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
 
-// --plan and --ray-cast-pixels: what the frame plan leaves out and which mirrors it ray-casts.
+// --plan and --ray-cast: what the frame plan leaves out and which mirror parts it ray-casts.
 std::vector<OptionSpec> planOptions();
 
 // Reads them into `settings`, or says which value is wrong and what it accepts.

@@ -40,7 +40,7 @@ CommandLine renderOptions() {
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
       "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] "
-      "[--plan needed|everything] [--ray-cast-pixels N] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
@@ -126,12 +126,13 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     char line[512];
     std::snprintf(line, sizeof line,
                   "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left out "
-                  "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast\n",
+                  "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast; predicted "
+                  "on llvmpipe: searching %.1f ms, ray-casting %.1f ms\n",
                   scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
                   methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,
                   mirror.culledVertices, mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow",
                   mirror.belowBudgetObjects, mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels),
-                  mirror.uncoveredRayCast);
+                  mirror.uncoveredRayCast, mirror.predictedCost.search, mirror.predictedCost.rayCast);
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;

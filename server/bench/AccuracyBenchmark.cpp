@@ -122,10 +122,10 @@ std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
     for (const glm::ivec2 mesh : {glm::ivec2(32, 16), glm::ivec2(64, 32), glm::ivec2(128, 64), glm::ivec2(256, 128)})
       sweep.push_back({"mesh " + std::to_string(mesh.x) + "x" + std::to_string(mesh.y), "mesh", {}, mesh});
   // Every row above measures the search, whatever the mirror's size on screen; the last casts every
-  // mirror pixel's reflected ray instead (what the planner picks for small mirrors).
-  for (AccuracySetting& setting : sweep) setting.settings.rayCastPixels = 0;
+  // mirror pixel's reflected ray instead (what the planner picks where it predicts that cheaper).
+  for (AccuracySetting& setting : sweep) setting.settings.rayCast = passes::RayCastRule::Never;
   AccuracySetting rayCast{"ray-cast every mirror", "ray-cast", {}};
-  rayCast.settings.rayCastPixels = passes::kMaxRayCastPixels;
+  rayCast.settings.rayCast = passes::RayCastRule::Always;
   sweep.push_back(rayCast);
   return sweep;
 }

@@ -60,7 +60,7 @@ Result<std::vector<TessellationBenchRow>> benchmarkTessellation(
     settings.tessellation = sweep[i];
     // Every mirror searched and nothing ray-cast where virtual objects leave a gap: the sweep is
     // about the tessellation and what its triangles cover.
-    settings.rayCastPixels = 0;
+    settings.rayCast = passes::RayCastRule::Never;
     settings.rayCastUncovered = false;
     std::vector<double> frameTimes, tessellationTimes;
     render::RenderedFrame last;

@@ -49,6 +49,24 @@ double projectedRadius(double radius, double distance, double focal) { return fo
 
 }  // namespace
 
+PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRange*>& reflected) {
+  // Milliseconds on llvmpipe (2 cores), fitted to `specula bench --ray-cast never` and `--ray-cast
+  // always` on the built-in scenes at 320x240, 640x480 and 1280x720 (README, "Search or ray-cast").
+  // Casting: one draw per reflected object over the part's pixels (fits within 30 %). Searching: a
+  // share of the pyramid and the tessellation rounds' readbacks, the virtual objects' raster over
+  // the part, and per reflected vertex and triangle the search, tessellation and drawing; how much
+  // a mesh splits is not known before the frame, so the kitchen and ufo take 2-5x this.
+  constexpr double kCastPerDraw = 0.021, kCastPerPixelAndObject = 5.1e-5;
+  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3, kSearchPerTriangle = 2.0e-3;
+  PartCost cost;
+  cost.search = kSearchPerPart + kSearchPerPixel * pixels;
+  for (const ReflectionSlotRange* range : reflected) {
+    cost.rayCast += kCastPerDraw + kCastPerPixelAndObject * pixels;
+    cost.search += kSearchPerVertex * range->vertexCount + kSearchPerTriangle * range->triangleCount;
+  }
+  return cost;
+}
+
 const char* partMethodName(PartMethod method) {
   switch (method) {
     case PartMethod::VirtualObjects: return "virtual-objects";
@@ -106,11 +124,9 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.
     if (!everything && search && 2.0 * std::sqrt(pixels / glm::pi<double>()) < settings.errorBudgetPixels)
       method = PartMethod::OwnColour;
-    else if (!everything && search && pixels <= settings.rayCastPixels)
-      method = PartMethod::RayCast;
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but draws nothing.
-    PlannedMirror planned{&mirror, method, pixels, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    PlannedMirror planned{&mirror, method, pixels, {}, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
     for (const ReflectionSlotRange& range : mirror.reflected) {
       const math::Bounds& objectBounds = worldBounds[range.object];
       if (!everything && (planned.facesAway || !canAppearIn(mirror.reach, mirrorToWorld, objectBounds, camera.eye))) {
@@ -125,6 +141,11 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
         planned.reflected.push_back(&range);
       }
     }
+    planned.cost = predictPartCost(pixels, planned.reflected);
+    if (method == PartMethod::VirtualObjects && search && !everything &&
+        (settings.rayCast == RayCastRule::Always ||
+         (settings.rayCast == RayCastRule::WhenCheaper && planned.cost.rayCast < planned.cost.search)))
+      method = planned.method = PartMethod::RayCast;
     // Everything it reflects far away: a cube map serves most of its pixels within the budget (those
     // seen within 60° of its normal, at least), the rest are ray-cast. One part that cannot meet its
     // own rays: the cube is captured from outside it. It replaces searching, not a small mirror's

@@ -23,12 +23,23 @@ enum class PartMethod {
 // "virtual-objects", "ray-cast", "own-colour" or "environment-map", as render, bench and the protocol name them.
 const char* partMethodName(PartMethod method);
 
+// What a mirror part's reflection is predicted to cost by each method, in milliseconds on llvmpipe:
+// only their ratio decides. A GPU's ratio has not been measured.
+struct PartCost {
+  double search = 0.0;   // search, tessellation and virtual objects
+  double rayCast = 0.0;  // a cast per pixel and reflected object
+};
+
+// The cost model behind RayCastRule::WhenCheaper, for a part covering about `pixels` frame pixels.
+PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRange*>& reflected);
+
 // A mirror part whose reflection is drawn this frame, and the reflected objects that can appear in it.
 struct PlannedMirror {
   const MirrorSlots* slots = nullptr;
   PartMethod method = PartMethod::VirtualObjects;
   double projectedPixels = 0.0;  // the mirror's, about (projectedPixels()): what the method was chosen by
   std::vector<const ReflectionSlotRange*> reflected;
+  PartCost cost;  // of the objects in `reflected`: what chose between searching and casting
   bool facesAway = false;  // the eye is behind every tangent plane of the part: nothing is searched
   std::size_t culledObjects = 0, culledVertices = 0;  // left out: behind the part or in its shadow
   // Left out because their image in this convex part, or the whole part (OwnColour), is smaller on
@@ -54,8 +65,8 @@ bool halfFloatsResolve(const math::Bounds& mirrorBounds);
 
 // worldBounds: one box per scene object at this frame's pose. With settings.plan Needed, a mirror
 // out of the frustum is left out, and so is a reflected object that cannot appear in a part
-// (passes::canAppearIn); a mirror covering at most settings.rayCastPixels is ray-cast. Everything
-// keeps every mirror and object and searches them all.
+// (passes::canAppearIn); a part is ray-cast by settings.rayCast (where predictPartCost() says it is
+// cheaper, by default). Everything keeps every mirror and object and searches them all.
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
                     glm::ivec2 frameSize, const ReflectionSettings& settings);
 

@@ -24,8 +24,6 @@ std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& s
   if (settings.environmentMapSize < kMinEnvironmentMapSize || settings.environmentMapSize > kMaxEnvironmentMapSize)
     return "environment map size must lie in [" + std::to_string(kMinEnvironmentMapSize) + ", " +
            std::to_string(kMaxEnvironmentMapSize) + "] texels per cube face";
-  if (settings.rayCastPixels < 0 || settings.rayCastPixels > kMaxRayCastPixels)
-    return "the ray-cast pixel bound must lie in [0, " + std::to_string(kMaxRayCastPixels) + "]";
   if (!(settings.errorBudgetPixels >= 0.0f && settings.errorBudgetPixels <= kMaxErrorBudgetPixels)) {
     char text[96];
     std::snprintf(text, sizeof text, "the error budget must lie in [0, %g] pixels", kMaxErrorBudgetPixels);

@@ -32,6 +32,13 @@ enum class TessellationMetric {
   Pixels,  // where the rasterizer puts the edge midpoint against where its true reflection projects
 };
 
+// Which mirror parts the frame plan ray-casts instead of searching (passes/FramePlan).
+enum class RayCastRule {
+  WhenCheaper,  // the parts for which the planner's cost model predicts casting cheaper than searching
+  Never,        // search every part (the virtual-objects method alone)
+  Always,       // ray-cast every part
+};
+
 // What the frame plan leaves out (passes/FramePlan).
 enum class PlanScope {
   Needed,      // mirrors out of view, and reflected objects a mirror part cannot show (behind it, in its shadow)
@@ -53,7 +60,6 @@ std::string describeTessellation(const TessellationSettings& settings);
 // The ranges reflectionSettingsProblem() accepts (and the command-line options name).
 inline constexpr float kMinGBufferScale = 0.125f, kMaxGBufferScale = 4.0f;
 inline constexpr int kMinEnvironmentMapSize = 8, kMaxEnvironmentMapSize = 2048;
-inline constexpr int kMaxRayCastPixels = 1 << 24;
 inline constexpr float kMaxErrorBudgetPixels = 16.0f;
 
 struct ReflectionSettings {
@@ -69,9 +75,9 @@ struct ReflectionSettings {
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb
   PlanScope plan = PlanScope::Needed;
-  // A mirror whose projected bounds cover at most this many frame pixels has each pixel's reflected
-  // ray cast against its reflected objects (exact) instead of searching their every vertex; 0: never.
-  int rayCastPixels = 16384;
+  // Which parts have each pixel's reflected ray cast against their reflected objects (exact) instead
+  // of searching the objects' every vertex.
+  RayCastRule rayCast = RayCastRule::WhenCheaper;
   // A searched part's pixels no virtual object landed on (coverage gaps at silhouettes and rims)
   // have their reflected rays cast against the part's reflected objects; off shows the background.
   bool rayCastUncovered = true;

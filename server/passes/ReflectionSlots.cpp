@@ -28,8 +28,9 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
                          static_cast<int>(parts.parts.size()), parts.parts[p].kind, seesItself, reach, {}};
       for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         if (o == m || !scene.objects[o].reflected) continue;
-        const auto vertexCount = static_cast<std::uint32_t>(scene.meshes[scene.objects[o].mesh].vertices.size());
-        mirror.reflected.push_back({o, slots.slotCount, vertexCount});
+        const scene::Mesh& mesh = scene.meshes[scene.objects[o].mesh];
+        const auto vertexCount = static_cast<std::uint32_t>(mesh.vertices.size());
+        mirror.reflected.push_back({o, slots.slotCount, vertexCount, static_cast<std::uint32_t>(mesh.triangleCount())});
         slots.slotCount += vertexCount;
       }
       slots.mirrors.push_back(std::move(mirror));

@@ -15,6 +15,7 @@ struct ReflectionSlotRange {
   std::size_t object = 0;       // index into Scene::objects
   std::uint32_t firstSlot = 0;  // first of the object's vertex count slots
   std::uint32_t vertexCount = 0;
+  std::uint32_t triangleCount = 0;  // the object's mesh's: what its search would tessellate and draw
 };
 
 // One part of a mirror (scene::MirrorParts): its own G-buffer layer, search and reflection.

@@ -41,6 +41,7 @@ struct MirrorPlanSummary {
   std::size_t culledObjects = 0, culledVertices = 0;
   std::size_t belowBudgetObjects = 0, belowBudgetVertices = 0;  // images smaller than the error budget
   std::size_t uncoveredRayCast = 0;  // pixels no virtual object covered, ray-cast instead (searched parts)
+  passes::PartCost predictedCost;     // what chose between searching and ray-casting
 };
 
 struct RenderedFrame {

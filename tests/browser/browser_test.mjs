@@ -165,7 +165,7 @@ try {
   check('the frame fills the canvas one to one', first.width === canvasSize[0] && first.height === canvasSize[1], `${first.width}x${first.height} vs ${canvasSize}`);
   const overlay = await evaluate("document.getElementById('overlay').textContent");
   check('the overlay shows fps, latency, server timings and search statistics',
-    /fps/.test(overlay) && /input → frame/.test(overlay) && /render [\d.]+ ms/.test(overlay) && /search: 1 mirrors/.test(overlay) && /plan: 1 mirror parts \(0 ray-cast, 0 own colour, 0 environment map, 0 facing away\) · drew 1 objects/.test(overlay) && /\d+ uncovered px ray-cast/.test(overlay), overlay);
+    /fps/.test(overlay) && /input → frame/.test(overlay) && /render [\d.]+ ms/.test(overlay) && /search: 1 mirrors/.test(overlay) && /plan: 1 mirror parts \([01] ray-cast, 0 own colour, 0 environment map, 0 facing away\) · drew 1 objects/.test(overlay) && /\d+ uncovered px ray-cast/.test(overlay), overlay);
   const pressKey = async (key) => {
     await page('Input.dispatchKeyEvent', { type: 'keyDown', key, text: key });
     await page('Input.dispatchKeyEvent', { type: 'keyUp', key });

@@ -25,7 +25,7 @@ fails_with "an unknown option is refused" "unknown option --colour" render --col
 fails_with "an unknown GL backend is refused" "--gl expects auto, egl-device" render --gl glx
 fails_with "an unknown GL backend is refused for the ray tracer too" "--gl expects auto, egl-device" render --method raytrace --gl glx
 fails_with "an unwritable output names the file" "could not write '$work/missing/dir/f.png'" render --size 8x8 --out "$work/missing/dir/f.png"
-output=$("$specula" render --scene quad --size 160x120 --ray-cast-pixels 0 --tessellation crack-free --threshold 0 --level 2 --out "$work/q.png" 2>&1)
+output=$("$specula" render --scene quad --size 160x120 --ray-cast never --tessellation crack-free --threshold 0 --level 2 --out "$work/q.png" 2>&1)
 check "render prints the tessellation it did" grep -q "tessellation: 2 -> 32 triangles; working per round 2 8 32" <<<"$output"
 output=$("$specula" render --scene quad --size 160x120 --tessellation none --out "$work/q0.png" 2>&1)
 check "--tessellation none runs no tessellation pass" bash -c "! grep -q tessellation <<<'$output'"
@@ -43,11 +43,11 @@ fails_with "a bad plan scope names the choices" "--plan expects needed or everyt
 output=$("$specula" render --scene checker-sphere --size 96x72 --out "$work/p.png" 2>&1)
 check "render prints the plan per mirror part: a small mirror is ray-cast" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): ray-cast 1 objects (289 vertices); 0 objects" <<<"$output"
 check "... and runs no search" bash -c "! grep -q ' search ' <<<'$output'"
-output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast-pixels 0 --out "$work/p0.png" 2>&1)
-check "--ray-cast-pixels 0 searches every mirror" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
-fails_with "a negative ray-cast bound is refused by name" "--ray-cast-pixels expects an integer in [0, 16777216]" render --ray-cast-pixels -5
+output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast never --out "$work/p0.png" 2>&1)
+check "--ray-cast never searches every mirror" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
+fails_with "an unknown ray-cast rule is refused by name" "--ray-cast expects cheaper, never or always, got 'sometimes'" render --ray-cast sometimes
 check "a searched mirror says how many uncovered pixels it ray-cast" grep -q "behind it or in its shadow); 0 objects (0 vertices) under the 0.5 px error budget; [0-9]* uncovered pixels ray-cast" <<<"$output"
-output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast-pixels 0 --uncovered background --out "$work/pb.png" 2>&1)
+output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast never --uncovered background --out "$work/pb.png" 2>&1)
 check "--uncovered background ray-casts none" grep -q "; 0 uncovered pixels ray-cast" <<<"$output"
 output=$("$specula" render --scene checker-sphere --size 16x12 --error-budget 16 --out "$work/tiny.png" 2>&1)
 check "a mirror narrower than the error budget shows its own colour" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): own colour, drew 0 objects (0 vertices); 0 objects, 0 vertices left out (behind it or in its shadow); 1 objects (289 vertices) under the 16 px error budget" <<<"$output"
@@ -60,7 +60,7 @@ check "... and runs the environment-map pass, not the search" bash -c "grep -q '
 check "... and writes a PNG" bash -c "head -c 8 '$work/env.png' | od -An -tx1 | grep -q '89 50 4e 47'"
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"
-check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast-pixels error-budget uncovered tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
+check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast error-budget uncovered tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
 finish

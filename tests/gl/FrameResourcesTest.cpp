@@ -41,8 +41,10 @@ TEST(FrameResources, PassTimesAccountForTheFrame) {
   Rig rig = makeRig("teapot-table");
   ASSERT_TRUE(rig.renderer);
   const scene::ScenePose pose = scene::ScenePose::at(rig.renderer->scene(), 0.0);
-  ASSERT_TRUE(rig.renderer->render(pose, 320, 240));  // shaders compiled, targets sized
-  auto frame = rig.renderer->render(pose, 320, 240);
+  passes::ReflectionSettings searched;  // every reflection pass runs
+  searched.rayCast = passes::RayCastRule::Never;
+  ASSERT_TRUE(rig.renderer->render(pose, 320, 240, searched));  // shaders compiled, targets sized
+  auto frame = rig.renderer->render(pose, 320, 240, searched);
   ASSERT_TRUE(frame) << frame.error();
   const auto& stages = frame->timings.stages;
   ASSERT_GE(stages.size(), 6u);
@@ -65,8 +67,10 @@ TEST(FrameResources, EachSessionResumesItsOwnSearchStateAfterAnotherRendered) {
   auto scene = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere"));
   auto renderer = session::GlFrameRenderer::create(std::move(*context), scene);
   ASSERT_TRUE(renderer) << renderer.error();
-  session::RenderJob a{1, scene::ScenePose::at(*scene, 0.0), 320, 240, {}};
-  session::RenderJob b{2, scene::ScenePose::at(*scene, 9.0), 320, 240, {}};  // the camera orbits 180° away
+  passes::ReflectionSettings searched;  // the planner would ray-cast the sphere, cheaper on llvmpipe
+  searched.rayCast = passes::RayCastRule::Never;
+  session::RenderJob a{1, scene::ScenePose::at(*scene, 0.0), 320, 240, searched};
+  session::RenderJob b{2, scene::ScenePose::at(*scene, 9.0), 320, 240, searched};  // the camera orbits 180° away
   const auto render = [&](const session::RenderJob& job) {
     auto out = (*renderer)->render(job);
     EXPECT_TRUE(out) << out.error();

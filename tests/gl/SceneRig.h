@@ -17,10 +17,10 @@
 namespace specula::testing {
 
 // Default settings, but every visible mirror is searched and drawn as virtual objects alone: the
-// planner would ray-cast a mirror this small on screen, the virtual-objects pass would ray-cast the
+// planner would ray-cast a mirror where that is cheaper, the virtual-objects pass would ray-cast the
 // pixels its triangles leave uncovered, and these tests are about the search and its triangles.
 inline passes::ReflectionSettings virtualObjects(passes::ReflectionSettings settings = {}) {
-  settings.rayCastPixels = 0;
+  settings.rayCast = passes::RayCastRule::Never;
   settings.rayCastUncovered = false;
   return settings;
 }

@@ -27,6 +27,13 @@ std::vector<math::Bounds> worldBounds(const scene::Scene& scene, const scene::Sc
   return bounds;
 }
 
+// `scene` with a box of side `size` added at `centre`, reflected in its mirrors.
+scene::Scene withBox(scene::Scene scene, const glm::vec3& centre, float size) {
+  const std::uint32_t mesh = scene::builtin::addMesh(scene, scene::primitives::box("probe-box", glm::vec3(size)));
+  scene::builtin::addObject(scene, "probe", mesh, 0, scene::builtin::placed(centre));
+  return scene;
+}
+
 // Default settings tessellate reflected geometry adaptively.
 const std::vector<std::string_view> kReflectionPasses{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search",
                                                       "tessellation", "virtual-objects"};
@@ -40,7 +47,9 @@ TEST(FramePlan, VisibleMirrorRunsTheReflectionPassesForEveryOtherReflectedObject
   EXPECT_EQ(slots.mirrors[0].reflected.size(), 1u) << "the sphere reflects the floor, not itself";
   EXPECT_EQ(slots.slotCount, scene.meshes[scene.objects[slots.mirrors[0].reflected[0].object].mesh].vertices.size());
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), {});
+  passes::ReflectionSettings searched;
+  searched.rayCast = passes::RayCastRule::Never;
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), searched);
   EXPECT_EQ(plan.passes, kReflectionPasses);
   EXPECT_TRUE(plan.tessellate);
   ASSERT_EQ(plan.mirrors.size(), 1u);
@@ -52,6 +61,7 @@ TEST(FramePlan, TessellationOffOrAtLevelZeroRunsNoTessellationPass) {
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   for (const auto& [mode, level] : {std::pair{passes::TessellationMode::None, 4}, std::pair{passes::TessellationMode::Paper, 0}}) {
     passes::ReflectionSettings settings;
+    settings.rayCast = passes::RayCastRule::Never;
     settings.tessellation.mode = mode;
     settings.tessellation.maxLevel = level;
     const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
@@ -163,7 +173,7 @@ TEST(FramePlan, HalfFloatGBuffersAreKeptOnlyForMirrorsNearTheOrigin) {
             passes::GBufferPrecision::Float32);
 }
 
-TEST(FramePlan, AMirrorCoveringFewPixelsIsRayCastAndNeedsNoSearchPasses) {
+TEST(FramePlan, APartIsRayCastWhereThatIsPredictedCheaperAndThenNeedsNoSearchPasses) {
   const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
   const auto slots = passes::ReflectionSlots::forScene(scene);
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
@@ -171,22 +181,39 @@ TEST(FramePlan, AMirrorCoveringFewPixelsIsRayCastAndNeedsNoSearchPasses) {
   const double large = passes::projectedPixels(bounds[slots.mirrors[0].mirrorObject], pose.camera, {640, 480});
   const double small = passes::projectedPixels(bounds[slots.mirrors[0].mirrorObject], pose.camera, {64, 48});
   EXPECT_NEAR(small * 100.0, large, 1e-6 * large) << "pixels scale with the frame's area";
-  EXPECT_GT(large, 16384.0);
 
-  const passes::FramePlan searched = passes::planFrame(slots, pose, bounds, {640, 480}, {});
-  ASSERT_EQ(searched.mirrors.size(), 1u);
-  EXPECT_EQ(searched.mirrors[0].method, passes::PartMethod::VirtualObjects);
-  const passes::FramePlan rayCast = passes::planFrame(slots, pose, bounds, {64, 48}, {});
+  // One light floor: a cast per pixel costs less than the search's share of the pyramid and rounds.
+  const passes::FramePlan rayCast = passes::planFrame(slots, pose, bounds, {640, 480}, {});
   ASSERT_EQ(rayCast.mirrors.size(), 1u);
   EXPECT_EQ(rayCast.mirrors[0].method, passes::PartMethod::RayCast);
+  EXPECT_LT(rayCast.mirrors[0].cost.rayCast, rayCast.mirrors[0].cost.search);
   EXPECT_EQ(rayCast.passes, (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects"}));
   EXPECT_FALSE(rayCast.tessellate);
 
-  passes::ReflectionSettings never;
-  never.rayCastPixels = 0;
-  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, never).mirrors[0].method, passes::PartMethod::VirtualObjects);
-  passes::ReflectionSettings everything;
+  // Twelve more light objects around it at 1280x720: thirteen casts per pixel cost more than
+  // searching their few hundred vertices.
+  scene::Scene crowded = scene;
+  for (int i = 0; i < 12; ++i) {
+    const float angle = 0.5236f * static_cast<float>(i);
+    crowded = withBox(crowded, {3.0f * std::cos(angle), 0.0f, 3.0f * std::sin(angle)}, 0.3f);
+  }
+  const auto crowdedSlots = passes::ReflectionSlots::forScene(crowded);
+  const scene::ScenePose crowdedPose = scene::ScenePose::at(crowded, 0.0);
+  const passes::FramePlan searched = passes::planFrame(crowdedSlots, crowdedPose, worldBounds(crowded, crowdedPose), {1280, 720}, {});
+  ASSERT_EQ(searched.mirrors.size(), 1u);
+  EXPECT_GE(searched.mirrors[0].reflected.size(), 10u);
+  EXPECT_EQ(searched.mirrors[0].method, passes::PartMethod::VirtualObjects);
+  EXPECT_GT(searched.mirrors[0].cost.rayCast, searched.mirrors[0].cost.search);
+  EXPECT_TRUE(searched.tessellate);
+
+  // The rules that override the cost model.
+  passes::ReflectionSettings never, always, everything;
+  never.rayCast = passes::RayCastRule::Never;
+  always.rayCast = passes::RayCastRule::Always;
   everything.plan = passes::PlanScope::Everything;
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, never).mirrors[0].method, passes::PartMethod::VirtualObjects);
+  EXPECT_EQ(passes::planFrame(crowdedSlots, crowdedPose, worldBounds(crowded, crowdedPose), {1280, 720}, always).mirrors[0].method,
+            passes::PartMethod::RayCast);
   EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, everything).mirrors[0].method, passes::PartMethod::VirtualObjects);
 
   // The eye inside the mirror's bounds: it may fill the frame.
@@ -194,6 +221,19 @@ TEST(FramePlan, AMirrorCoveringFewPixelsIsRayCastAndNeedsNoSearchPasses) {
   inside.eye = bounds[slots.mirrors[0].mirrorObject].center();
   inside.target = inside.eye + glm::vec3(0.0f, 0.0f, -1.0f);
   EXPECT_EQ(passes::projectedPixels(bounds[slots.mirrors[0].mirrorObject], inside, {64, 48}), 64.0 * 48.0);
+}
+
+// Casting grows with pixels times objects; searching with the objects' vertices and triangles.
+TEST(FramePlan, ThePredictedCostsFollowPixelsObjectsAndGeometry) {
+  passes::ReflectionSlotRange light{0, 0, 100, 150}, heavy{1, 100, 30000, 60000};
+  const std::vector<const passes::ReflectionSlotRange*> one{&light}, two{&light, &light}, big{&heavy};
+  const passes::PartCost base = passes::predictPartCost(10000.0, one);
+  const double doubled = passes::predictPartCost(20000.0, two).rayCast;
+  EXPECT_GT(doubled, 3.5 * base.rayCast) << "twice the pixels for twice the objects";
+  EXPECT_LE(doubled, 4.0 * base.rayCast);
+  EXPECT_GT(passes::predictPartCost(10000.0, big).search, 10.0 * base.search);
+  EXPECT_DOUBLE_EQ(passes::predictPartCost(10000.0, big).rayCast, base.rayCast) << "a cast per pixel whatever the mesh";
+  EXPECT_EQ(passes::predictPartCost(10000.0, {}).rayCast, 0.0);
 }
 
 TEST(FramePlan, TheSameViewGivesTheSamePlan) {
@@ -211,17 +251,6 @@ TEST(FramePlan, TheSameViewGivesTheSamePlan) {
     EXPECT_EQ(first.mirrors[i].reflected, second.mirrors[i].reflected);
     EXPECT_EQ(first.mirrors[i].culledVertices, second.mirrors[i].culledVertices);
   }
-}
-
-TEST(FramePlan, ARayCastBoundOutOfRangeIsRefusedByName) {
-  passes::ReflectionSettings settings;
-  settings.rayCastPixels = -1;
-  ASSERT_TRUE(passes::reflectionSettingsProblem(settings));
-  EXPECT_NE(passes::reflectionSettingsProblem(settings)->find("ray-cast pixel bound"), std::string::npos);
-  settings.rayCastPixels = passes::kMaxRayCastPixels + 1;
-  EXPECT_TRUE(passes::reflectionSettingsProblem(settings));
-  settings.rayCastPixels = 0;
-  EXPECT_FALSE(passes::reflectionSettingsProblem(settings));
 }
 
 TEST(FramePlan, AnErrorBudgetOutOfRangeIsRefusedByName) {
@@ -262,13 +291,6 @@ TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {
 
 namespace {
 
-// `scene` with a box of side `size` added at `centre`, reflected in its mirrors.
-scene::Scene withBox(scene::Scene scene, const glm::vec3& centre, float size) {
-  const std::uint32_t mesh = scene::builtin::addMesh(scene, scene::primitives::box("probe-box", glm::vec3(size)));
-  scene::builtin::addObject(scene, "probe", mesh, 0, scene::builtin::placed(centre));
-  return scene;
-}
-
 // The planned part `part` of the scene's first mirror, for the scene's camera at t = 0.
 passes::PlannedMirror plannedPart(const scene::Scene& scene, const passes::ReflectionSlots& slots, int part,
                                   const passes::ReflectionSettings& settings, glm::ivec2 frame = {640, 480}) {
@@ -289,7 +311,7 @@ bool reflects(const passes::PlannedMirror& planned, const std::string& name, con
 
 TEST(FramePlan, AnObjectWhoseImageIsUnderTheBudgetIsLeftOutOfConvexPartsOnly) {
   passes::ReflectionSettings searched;
-  searched.rayCastPixels = 0;
+  searched.rayCast = passes::RayCastRule::Never;
   passes::ReflectionSettings exact = searched;
   exact.errorBudgetPixels = 0.0f;
   passes::ReflectionSettings everything = searched;

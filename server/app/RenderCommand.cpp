@@ -136,11 +136,12 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;
-  if (!tessellation.trianglesPerRound.empty()) {
+  if (!tessellation.trianglesPerRound.empty() || tessellation.predictedUnsplitObjects > 0) {
     text += "tessellation: " + std::to_string(tessellation.inputTriangles) + " -> " +
             std::to_string(tessellation.finishedTriangles) + " triangles; working per round";
     for (std::uint32_t count : tessellation.trianglesPerRound) text += " " + std::to_string(count);
-    text += "; " + std::to_string(tessellation.midpointSearches.searched) + " midpoint searches";
+    text += "; " + std::to_string(tessellation.midpointSearches.searched) + " midpoint searches; " +
+            std::to_string(tessellation.predictedUnsplitObjects) + " objects planned unsplit (no edge image can reach the threshold)";
     text += tessellation.capped ? "; CAPPED at the triangle limit: raise --threshold or lower --level\n" : "\n";
   }
   return text;

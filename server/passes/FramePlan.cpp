@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <glm/gtc/constants.hpp>
 
@@ -44,8 +45,29 @@ double focalPixels(const math::Camera& camera, glm::ivec2 frameSize) {
   return 0.5 * frameSize.y / std::tan(glm::radians(static_cast<double>(camera.fovYDegrees)) * 0.5);
 }
 
-// Radius in pixels of a sphere of `radius` seen `distance` away (distance > radius).
+// Radius in pixels of a sphere of `radius` seen `distance` away (distance > radius), on the view axis.
 double projectedRadius(double radius, double distance, double focal) { return focal * std::tan(std::asin(radius / distance)); }
+
+// How much larger in pixels than on the view axis anything seen within the mirror's bounding sphere
+// can be drawn: a pixel's offset is focal * tan(angle off the axis), so pixels per radian grow as 1 /
+// cos²; infinite when the sphere reaches 80° off the axis (or holds the eye).
+double offAxisStretch(const math::Bounds& mirror, const math::Camera& camera) {
+  const glm::dvec3 toCentre = glm::dvec3(mirror.center()) - glm::dvec3(camera.eye);
+  const double distance = glm::length(toCentre);
+  if (distance <= mirror.radius()) return std::numeric_limits<double>::infinity();
+  const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
+  const double angle = std::acos(std::clamp(glm::dot(forward, toCentre / distance), -1.0, 1.0)) + std::asin(mirror.radius() / distance);
+  if (angle >= glm::radians(80.0)) return std::numeric_limits<double>::infinity();
+  return 1.0 / (std::cos(angle) * std::cos(angle));
+}
+
+// The largest distance in frame pixels between two points of the mirror as drawn: every image in it
+// lies there.
+double mirrorDiameterPixels(const math::Bounds& mirror, const math::Camera& camera, glm::ivec2 frameSize) {
+  const double distance = glm::length(mirror.center() - camera.eye);
+  if (distance <= mirror.radius()) return std::numeric_limits<double>::infinity();
+  return 2.0 * projectedRadius(mirror.radius(), distance, focalPixels(camera, frameSize)) * offAxisStretch(mirror, camera);
+}
 
 }  // namespace
 
@@ -96,13 +118,29 @@ double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, d
 }
 
 double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds& object, const math::Camera& camera,
-                                 glm::ivec2 frameSize) {
+                                 glm::ivec2 frameSize, std::optional<double> featureRadius) {
   if (mirror.empty() || object.empty()) return 0.0;
   const double eyeToMirror = glm::length(mirror.center() - camera.eye) - mirror.radius();
   const double mirrorToObject = glm::length(object.center() - mirror.center()) - mirror.radius() - object.radius();
-  const double path = eyeToMirror + mirrorToObject;
-  if (eyeToMirror <= 0.0 || mirrorToObject <= 0.0 || path <= object.radius()) return std::numeric_limits<double>::infinity();
-  return 2.0 * projectedRadius(object.radius(), path, focalPixels(camera, frameSize));
+  const double path = eyeToMirror + mirrorToObject, radius = featureRadius.value_or(object.radius());
+  const double mirrorSize = mirrorDiameterPixels(mirror, camera, frameSize);
+  if (eyeToMirror <= 0.0 || mirrorToObject <= 0.0 || path <= radius) return mirrorSize;
+  return std::min(mirrorSize, 2.0 * projectedRadius(radius, path, focalPixels(camera, frameSize)) * offAxisStretch(mirror, camera));
+}
+
+bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, double longestEdge, const math::Camera& camera,
+                      glm::ivec2 frameSize, const TessellationSettings& settings) {
+  // Only crack-free pixel tessellation measures its error in pixels edge by edge.
+  if (settings.mode != TessellationMode::CrackFree || settings.metric != TessellationMetric::Pixels || !(settings.threshold > 0.0f))
+    return false;
+  // tessellation-classify.comp splits an edge longer than half its distance from the mirror (at
+  // least the mirror's radius) whatever it shows; the nearest point of the object's box bounds that.
+  const glm::vec3 centre = mirror.center();
+  const float toObject = glm::length(glm::max(glm::max(object.low - centre, centre - object.high), glm::vec3(0.0f)));
+  if (longestEdge > 0.5 * std::max(toObject, mirror.radius())) return false;
+  // Each triangle lies in a ball of its longest edge's radius, whose image bounds both the triangle's
+  // curved image and the straight virtual triangle between its corners' images.
+  return convexImageDiameterPixels(mirror, object, camera, frameSize, longestEdge) < settings.threshold;
 }
 
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
@@ -122,11 +160,11 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     const bool search = settings.method == ReflectionMethod::Search;
     PartMethod method = settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
     // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.
-    if (!everything && search && 2.0 * std::sqrt(pixels / glm::pi<double>()) < settings.errorBudgetPixels)
+    if (!everything && search && mirrorDiameterPixels(mirrorBounds, camera, frameSize) < settings.errorBudgetPixels)
       method = PartMethod::OwnColour;
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but draws nothing.
-    PlannedMirror planned{&mirror, method, pixels, {}, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    PlannedMirror planned{&mirror, method, pixels, {}, {}, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
     for (const ReflectionSlotRange& range : mirror.reflected) {
       const math::Bounds& objectBounds = worldBounds[range.object];
       if (!everything && (planned.facesAway || !canAppearIn(mirror.reach, mirrorToWorld, objectBounds, camera.eye))) {
@@ -146,6 +184,13 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
         (settings.rayCast == RayCastRule::Always ||
          (settings.rayCast == RayCastRule::WhenCheaper && planned.cost.rayCast < planned.cost.search)))
       method = planned.method = PartMethod::RayCast;
+    for (const ReflectionSlotRange* range : planned.reflected) {
+      const glm::mat3 linear(pose.objectToWorld[range->object]);
+      const double scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+      planned.tessellated.push_back(everything || mirror.kind != scene::SurfaceKind::Convex ||
+                                    !edgesStayUnsplit(mirrorBounds, worldBounds[range->object], scale * range->longestEdge,
+                                                      camera, frameSize, settings.tessellation));
+    }
     // Everything it reflects far away: a cube map serves most of its pixels within the budget (those
     // seen within 60° of its normal, at least), the rest are ray-cast. One part that cannot meet its
     // own rays: the cube is captured from outside it. It replaces searching, not a small mirror's

@@ -1,6 +1,7 @@
 #pragma once
 // The frame graph as plain data: which passes run and which mirrors they serve, decided per frame
 // from what the camera sees, so a frame without a visible mirror runs no reflection pass at all.
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct PlannedMirror {
   PartMethod method = PartMethod::VirtualObjects;
   double projectedPixels = 0.0;  // the mirror's, about (projectedPixels()): what the method was chosen by
   std::vector<const ReflectionSlotRange*> reflected;
+  // Per entry of `reflected`: whether tessellation may split it; one whose every edge's image stays
+  // shorter than the threshold (edgesStayUnsplit) is drawn from its mesh without a round.
+  std::vector<bool> tessellated;
   PartCost cost;  // of the objects in `reflected`: what chose between searching and casting
   bool facesAway = false;  // the eye is behind every tangent plane of the part: nothing is searched
   std::size_t culledObjects = 0, culledVertices = 0;  // left out: behind the part or in its shadow
@@ -85,9 +89,19 @@ double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, d
 
 // An upper bound on the diameter in frame pixels of any image of `object` in a convex mirror part
 // inside `mirror` (world boxes), seen from `eye`: a flat mirror shows an object at least as far as
-// the eye–mirror–object path, and a convex one shrinks it further. Infinite when the bounds meet.
+// the eye–mirror–object path, and a convex one shrinks it further; off the view axis pixels per
+// radian grow (1 / cos²), and no image is larger than the mirror as drawn. Infinite when the eye is
+// inside the mirror's bounds.
+// `featureRadius`: the bound for a ball of that radius anywhere in `object` instead (an edge).
 double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds& object, const math::Camera& camera,
-                                 glm::ivec2 frameSize);
+                                 glm::ivec2 frameSize, std::optional<double> featureRadius = std::nullopt);
+
+// Whether crack-free pixel tessellation (settings) has nothing to correct on an object inside
+// `object` whose longest edge is `longestEdge` (world) in a convex part inside `mirror`: the image
+// of each of its triangles is smaller than the threshold (convexImageDiameterPixels), so its straight
+// virtual triangle is within the threshold of the curved image, and no edge is long beside the mirror.
+bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, double longestEdge, const math::Camera& camera,
+                      glm::ivec2 frameSize, const TessellationSettings& settings);
 
 // Whether a world-space box can be seen through the camera's frustum widened by `margin`.
 bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, float aspect, float margin);

@@ -1,11 +1,30 @@
 #include "passes/ReflectionSlots.h"
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
 #include "passes/QuadricUniforms.h"
 
 namespace specula::passes {
 
+namespace {
+
+float longestEdge(const scene::Mesh& mesh) {
+  float longest = 0.0f;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    for (std::size_t e = 0; e < 3; ++e)
+      longest = std::max(longest, glm::distance(mesh.vertices[mesh.indices[t + e]].position,
+                                                mesh.vertices[mesh.indices[t + (e + 1) % 3]].position));
+  return longest;
+}
+
+}  // namespace
+
 ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
   ReflectionSlots slots;
+  std::vector<float> longestEdges;
+  for (const scene::Mesh& mesh : scene.meshes) longestEdges.push_back(longestEdge(mesh));
   int stencil = 0;
   for (std::size_t m = 0; m < scene.objects.size(); ++m) {
     const scene::SceneObject& object = scene.objects[m];
@@ -30,7 +49,8 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
         if (o == m || !scene.objects[o].reflected) continue;
         const scene::Mesh& mesh = scene.meshes[scene.objects[o].mesh];
         const auto vertexCount = static_cast<std::uint32_t>(mesh.vertices.size());
-        mirror.reflected.push_back({o, slots.slotCount, vertexCount, static_cast<std::uint32_t>(mesh.triangleCount())});
+        mirror.reflected.push_back(
+            {o, slots.slotCount, vertexCount, static_cast<std::uint32_t>(mesh.triangleCount()), longestEdges[scene.objects[o].mesh]});
         slots.slotCount += vertexCount;
       }
       slots.mirrors.push_back(std::move(mirror));

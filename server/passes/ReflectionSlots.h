@@ -16,6 +16,7 @@ struct ReflectionSlotRange {
   std::uint32_t firstSlot = 0;  // first of the object's vertex count slots
   std::uint32_t vertexCount = 0;
   std::uint32_t triangleCount = 0;  // the object's mesh's: what its search would tessellate and draw
+  float longestEdge = 0.0f;         // the mesh's longest triangle edge, object space: bounds its images' bends
 };
 
 // One part of a mirror (scene::MirrorParts): its own G-buffer layer, search and reflection.

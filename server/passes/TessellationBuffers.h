@@ -47,6 +47,7 @@ struct TessellationStatistics {
   std::uint32_t finishedTriangles = 0;              // triangles the virtual-objects pass draws
   SearchStatistics midpointSearches;                // the searches for new edge midpoints
   bool capped = false;                              // a list reached kMaxTriangles: splitting stopped early
+  std::uint32_t predictedUnsplitObjects = 0;        // drawn from their meshes without a round (PlannedMirror::tessellated)
 };
 
 class TessellationBuffers {

@@ -82,22 +82,31 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const Planned
 
   // Every reflected object of the mirror goes through the rounds together, each in its own run of
   // the working list, so a round costs one readback whatever the number of objects.
+  const auto drawFromMesh = [&](const ReflectionSlotRange* range) {
+    buffers.ranges().push_back({mirror.slots, range, 0, static_cast<GLsizei>(range->triangleCount), true});
+    statistics.finishedTriangles += range->triangleCount;
+  };
   std::vector<ObjectRun> runs;
-  std::size_t total = 0;
-  for (const ReflectionSlotRange* range : mirror.reflected) {
-    const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range->object].mesh].triangleCount();
-    if (triangles == 0) continue;
-    runs.push_back({range, total, triangles});
-    total += triangles;
+  std::size_t total = 0, everyTriangle = 0;
+  for (std::size_t i = 0; i < mirror.reflected.size(); ++i) {
+    const ReflectionSlotRange* range = mirror.reflected[i];
+    everyTriangle += range->triangleCount;
+    if (range->triangleCount == 0) continue;
+    if (!mirror.tessellated[i]) {  // the plan predicts no split: no round for it
+      statistics.inputTriangles += range->triangleCount;
+      ++statistics.predictedUnsplitObjects;
+      drawFromMesh(range);
+      continue;
+    }
+    runs.push_back({range, total, range->triangleCount});
+    total += range->triangleCount;
   }
   if (runs.empty()) return;
   statistics.inputTriangles += static_cast<std::uint32_t>(total);
-  const auto drawFromMesh = [&](const ReflectionSlotRange* range) {
-    const std::size_t triangles = frame.scene.meshes[frame.scene.objects[range->object].mesh].triangleCount();
-    buffers.ranges().push_back({mirror.slots, range, 0, static_cast<GLsizei>(triangles), true});
-    statistics.finishedTriangles += static_cast<std::uint32_t>(triangles);
-  };
-  if (!buffers.reserveSplits(total) || !buffers.reserveRequests(total, runs.size())) {
+  // Sized for every reflected triangle when that fits (the working lists too, below), so which
+  // objects the plan leaves unsplit this frame does not grow the buffers from one frame to the next.
+  const std::size_t sized = std::max(total, std::min(everyTriangle, TessellationBuffers::kMaxTriangles));
+  if (!buffers.reserveSplits(sized) || !buffers.reserveRequests(sized, mirror.reflected.size())) {
     statistics.capped = true;
     for (const ObjectRun& run : runs) drawFromMesh(run.range);
     return;
@@ -151,7 +160,8 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const Planned
     // Past the cap or this part's share of the finished list: the working triangles finish here
     // (they fit the share, since the last round's check counted them as children).
     if (!last && children > 0 &&
-        (buffers.finishedCount() + unsplit + children > finishedBudget || !buffers.reserveWorking(to, children)))
+        (buffers.finishedCount() + unsplit + children > finishedBudget ||
+         !buffers.reserveWorking(to, std::max(children, std::min(everyTriangle, TessellationBuffers::kMaxTriangles)))))
       last = true;
     if (last && round < settings.maxLevel) statistics.capped = true;
     if (last) {

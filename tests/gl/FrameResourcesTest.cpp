@@ -20,6 +20,7 @@ TEST(FrameResources, FramesOfOneSizeCreateNoGlObjects) {
   // The kitchen: a mirror of two parts that sees itself, searched and tessellated, or (the planner's
   // choice at this size) ray-cast against every object's hierarchy.
   for (const passes::ReflectionSettings& settings : {specula::testing::virtualObjects(), passes::ReflectionSettings{}}) {
+    SCOPED_TRACE(settings.rayCast == passes::RayCastRule::Never ? "searched" : "planned");
     Rig rig = makeRig("kitchen");
     ASSERT_TRUE(rig.renderer);
     const scene::Scene& scene = rig.renderer->scene();

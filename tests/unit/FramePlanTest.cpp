@@ -266,7 +266,8 @@ TEST(FramePlan, AnErrorBudgetOutOfRangeIsRefusedByName) {
   }
 }
 
-// An image in a convex mirror is never larger than the object seen along the eye-mirror-object path.
+// An image in a convex mirror is never larger than the object seen along the eye-mirror-object path,
+// stretched as far off the view axis as the mirror reaches, nor than the mirror as drawn.
 TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {
   const math::Camera camera{{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 45.0f};
   math::Bounds mirror;
@@ -281,12 +282,57 @@ TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {
   const double focal = 240.0 / std::tan(glm::radians(22.5));
   const math::Bounds far = boxAt({100.0f, 0.0f, 0.0f}, 0.01f);
   const double path = (5.0 - mirror.radius()) + (100.0 - mirror.radius() - far.radius());
-  EXPECT_NEAR(passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}), 2.0 * focal * std::tan(std::asin(far.radius() / path)),
-              1e-6);
+  const double edge = std::asin(mirror.radius() / 5.0);  // the mirror's farthest point off the axis
+  const double stretch = 1.0 / (std::cos(edge) * std::cos(edge));
+  EXPECT_NEAR(passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}),
+              2.0 * focal * std::tan(std::asin(far.radius() / path)) * stretch, 1e-6);
   EXPECT_LT(passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}), 0.5);
   EXPECT_GT(passes::convexImageDiameterPixels(mirror, boxAt({3.0f, 0.0f, 0.0f}, 0.5f), camera, {640, 480}), 10.0);
-  EXPECT_TRUE(std::isinf(passes::convexImageDiameterPixels(mirror, boxAt({1.5f, 0.0f, 0.0f}, 0.6f), camera, {640, 480})))
-      << "an object touching the mirror's bounds can fill it";
+  const double mirrorDrawn = 2.0 * focal * std::tan(edge) * stretch;
+  EXPECT_NEAR(passes::convexImageDiameterPixels(mirror, boxAt({1.5f, 0.0f, 0.0f}, 0.6f), camera, {640, 480}), mirrorDrawn, 1e-6)
+      << "an object touching the mirror's bounds can fill it, and no more";
+  // Off the view axis the same object may be drawn larger.
+  math::Camera aside = camera;
+  aside.target = {-2.0f, 0.0f, 0.0f};
+  EXPECT_GT(passes::convexImageDiameterPixels(mirror, far, aside, {640, 480}),
+            1.1 * passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}));
+  math::Camera inside = camera;
+  inside.eye = {0.2f, 0.0f, 0.0f};
+  EXPECT_TRUE(std::isinf(passes::convexImageDiameterPixels(mirror, far, inside, {640, 480}))) << "the eye inside the mirror's bounds";
+}
+
+// Crack-free pixel tessellation searches only edges drawn at least the threshold long, and every
+// edge long beside the mirror: an object whose every edge stays shorter is planned unsplit.
+TEST(FramePlan, AnObjectNoEdgeOfWhichCanBeDrawnAsLongAsTheThresholdIsPlannedUnsplit) {
+  const math::Camera camera{{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 45.0f};
+  math::Bounds mirror;
+  mirror.add(glm::vec3(-1.0f));
+  mirror.add(glm::vec3(1.0f));
+  math::Bounds object;
+  object.add(glm::vec3(19.0f, -1.0f, -1.0f));
+  object.add(glm::vec3(21.0f, 1.0f, 1.0f));
+  passes::TessellationSettings settings;
+  settings.threshold = 4.0f;
+  EXPECT_TRUE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, settings));
+  EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.5, camera, {640, 480}, settings)) << "a longer edge may be drawn longer";
+  settings.threshold = 0.1f;
+  EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, settings)) << "a finer threshold";
+  settings.threshold = 4.0f;
+  for (const auto mode : {passes::TessellationMode::Paper, passes::TessellationMode::None}) {
+    passes::TessellationSettings other = settings;
+    other.mode = mode;
+    EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, other)) << "only crack-free decides by length";
+  }
+  passes::TessellationSettings angle = settings;
+  angle.metric = passes::TessellationMetric::Angle;
+  EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, angle));
+  // An edge longer than half its distance from the mirror splits whatever it shows.
+  math::Bounds beside;
+  beside.add(glm::vec3(1.5f, -0.1f, -0.1f));
+  beside.add(glm::vec3(2.5f, 0.1f, 0.1f));
+  settings.threshold = 1000.0f;
+  EXPECT_TRUE(passes::edgesStayUnsplit(mirror, beside, 0.5, camera, {640, 480}, settings));
+  EXPECT_FALSE(passes::edgesStayUnsplit(mirror, beside, 0.9, camera, {640, 480}, settings));
 }
 
 namespace {

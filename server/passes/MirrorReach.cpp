@@ -22,9 +22,10 @@ float smallestScale(const glm::mat4& transform) {
   return std::min({glm::length(glm::vec3(transform[0])), glm::length(glm::vec3(transform[1])), glm::length(glm::vec3(transform[2]))});
 }
 
-// Whether the largest value of (P − S)·N over P in the object's sphere, S in the part's sphere and N
-// in the normal cone is at most 0: the object is behind every tangent plane of the part.
-bool behindEveryTangentPlane(const glm::vec3& partCentre, float partRadius, const glm::vec3& axis, float cosine,
+// Whether the largest value of (P − S)·N over P in the object's sphere, S on the part and N in the
+// normal cone is at most 0: the object is behind every tangent plane of the part. `partDepth` bounds
+// (S − partCentre)·N over the part and the cone (at most the part's radius; 0 for a flat part).
+bool behindEveryTangentPlane(const glm::vec3& partCentre, float partDepth, const glm::vec3& axis, float cosine,
                              const glm::vec3& objectCentre, float objectRadius) {
   const glm::vec3 offset = objectCentre - partCentre;
   const float distance = glm::length(offset);
@@ -34,7 +35,7 @@ bool behindEveryTangentPlane(const glm::vec3& partCentre, float partRadius, cons
     const float halfAngle = std::acos(std::clamp(cosine, -1.0f, 1.0f));
     largest = distance * std::cos(std::max(0.0f, toAxis - halfAngle));
   }
-  return largest + objectRadius + partRadius <= 0.0f;
+  return largest + objectRadius + partDepth <= 0.0f;
 }
 
 // Whether every point of the object's sphere lies behind the ball as seen from the eye: inside the
@@ -55,9 +56,17 @@ bool inShadowOf(const Ball& ball, const glm::vec3& eye, const glm::vec3& objectC
 // Whether the sphere lies behind every tangent plane of the part placed by `mirrorToWorld`.
 bool behindThePart(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const glm::vec3& centre, float radius) {
   if (reach.normalCosine <= 0.0f || !keepsAngles(mirrorToWorld)) return false;
-  const math::Bounds part = reach.bounds.transformed(mirrorToWorld);
   const glm::vec3 axis = glm::normalize(math::normalMatrix(mirrorToWorld) * reach.normalAxis);
-  return behindEveryTangentPlane(part.center(), part.radius(), axis, reach.normalCosine, centre, radius);
+  // The part's box reaches |axis|·halfExtent along the axis; a normal tilted within the cone adds at
+  // most sin(half angle) times the box's half diagonal (object space, then the transform's one scale).
+  const glm::vec3 halfExtent = 0.5f * (reach.bounds.high - reach.bounds.low);
+  const float sine = std::sqrt(std::max(0.0f, 1.0f - reach.normalCosine * reach.normalCosine));
+  const float scale = std::max({glm::length(glm::vec3(mirrorToWorld[0])), glm::length(glm::vec3(mirrorToWorld[1])),
+                                glm::length(glm::vec3(mirrorToWorld[2]))});
+  const float depth = scale * std::min(glm::length(halfExtent), glm::dot(glm::abs(reach.normalAxis), halfExtent) +
+                                                                     sine * glm::length(halfExtent));
+  const glm::vec3 partCentre(mirrorToWorld * glm::vec4(reach.bounds.center(), 1.0f));
+  return behindEveryTangentPlane(partCentre, depth, axis, reach.normalCosine, centre, radius);
 }
 
 }  // namespace

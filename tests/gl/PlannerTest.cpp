@@ -296,6 +296,86 @@ TEST(Planner, ObjectsPlannedUnsplitSkipTheRoundsAndThePictureStays) {
   }
 }
 
+// A flat mirror panel (a one-cell grid) with balls above and below it, seen exactly edge-on, from
+// just above (grazing) and from above: the planner's rules leave the picture as --plan everything
+// draws it, and what it casts by default matches the ray tracer.
+TEST(Planner, AFlatMirrorSeenEdgeOnOrGrazingKeepsThePicture) {
+  for (const float eyeHeight : {0.5f, 0.52f, 2.0f}) {
+    const std::string json = R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
+      "camera": {"eye": [0, )" + std::to_string(eyeHeight) + R"(, 4], "target": [0, 0.5, 0], "fov": 45},
+      "meshes": [{"name": "panel", "primitive": {"type": "grid", "size": [3, 3], "cells": [1, 1]}},
+        {"name": "ball", "primitive": {"type": "sphere", "radius": 0.3, "slices": 32, "stacks": 16}}],
+      "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9}, {"name": "red", "color": "#d02020"},
+        {"name": "green", "color": "#20b040"}],
+      "objects": [{"name": "panel", "mesh": "panel", "material": "chrome", "translation": [0, 0.5, 0], "mirror": {}},
+        {"name": "above", "mesh": "ball", "material": "red", "translation": [0.3, 1.2, -0.4]},
+        {"name": "below", "mesh": "ball", "material": "green", "translation": [-0.4, -0.3, 0.2]}],
+      "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})";
+    const auto scene = parse(json);
+    ASSERT_TRUE(scene);
+    SCOPED_TRACE("eye at height " + std::to_string(eyeHeight));
+    const PlannedAndEverything frames = renderBoth(scene);
+    EXPECT_LE(frames.differingPixels, 2u);
+    for (const render::MirrorPlanSummary& part : frames.needed.plan) {
+      EXPECT_TRUE(std::isfinite(part.projectedPixels));
+      EXPECT_GE(part.culledObjects, 1u) << "the ball below the panel is behind it";
+    }
+    auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+    ASSERT_TRUE(context) << context.error();
+    auto renderer = render::Renderer::create(**context, scene);
+    ASSERT_TRUE(renderer) << renderer.error();
+    const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+    auto planned = (*renderer)->render(pose, kWidth, kHeight);
+    ASSERT_TRUE(planned) << planned.error();
+    const specula::testing::MirrorMismatch mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
+    std::printf("flat panel, eye at height %.2f: %zu pixels differ from --plan everything; %.2f %% of %zu mirror pixels from the "
+                "ray tracer\n",
+                static_cast<double>(eyeHeight), frames.differingPixels, 100.0 * mismatch.share, mismatch.mirrorPixels);
+    if (mismatch.mirrorPixels > 100) {
+      EXPECT_LE(mismatch.share, 0.01);
+    }
+  }
+}
+
+// A mirror sphere 80 m across seen from just outside it, the eye inside its bounding box: it may fill
+// the frame, no image bound holds, and the planner must neither leave out nor shrink anything.
+TEST(Planner, AHugeMirrorAroundTheEyesBoundsKeepsThePicture) {
+  const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
+    "camera": {"eye": [30, -5, 30], "target": [22, -14, 22], "fov": 50},
+    "meshes": [{"name": "globe", "primitive": {"type": "sphere", "radius": 40, "slices": 256, "stacks": 128}},
+      {"name": "ball", "primitive": {"type": "sphere", "radius": 0.8, "slices": 32, "stacks": 16}}],
+    "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9}, {"name": "red", "color": "#d02020"},
+      {"name": "green", "color": "#20b040"}, {"name": "blue", "color": "#3050e0"}],
+    "objects": [{"name": "globe", "mesh": "globe", "material": "chrome", "translation": [0, -40.5, 0],
+                 "mirror": {"curvature": "convex", "analytic": {"sphere": {"center": [0, -40.5, 0], "radius": 40}}}},
+      {"name": "red", "mesh": "ball", "material": "red", "translation": [24, -11.5, 21]},
+      {"name": "green", "mesh": "ball", "material": "green", "translation": [20, -12, 25]},
+      {"name": "blue", "mesh": "ball", "material": "blue", "translation": [27, -7, 26]}],
+    "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
+  ASSERT_TRUE(scene);
+  const PlannedAndEverything frames = renderBoth(scene);
+  ASSERT_EQ(frames.needed.plan.size(), 1u);
+  const render::MirrorPlanSummary& part = frames.needed.plan[0];
+  EXPECT_EQ(part.projectedPixels, static_cast<double>(kWidth) * kHeight) << "the eye inside its bounds: it may fill the frame";
+  EXPECT_EQ(part.belowBudgetObjects, 0u);
+  EXPECT_EQ(part.searchedObjects, 3u);
+  EXPECT_EQ(frames.needed.tessellation.predictedUnsplitObjects, 0u);
+  EXPECT_LE(frames.differingPixels, 2u);
+
+  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
+  ASSERT_TRUE(context) << context.error();
+  auto renderer = render::Renderer::create(**context, scene);
+  ASSERT_TRUE(renderer) << renderer.error();
+  const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+  auto planned = (*renderer)->render(pose, kWidth, kHeight);
+  ASSERT_TRUE(planned) << planned.error();
+  const specula::testing::MirrorMismatch mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
+  std::printf("huge mirror: %zu pixels differ from --plan everything; planned (%s) %.2f %% of %zu mirror pixels from the ray tracer\n",
+              frames.differingPixels, passes::partMethodName(planned->plan.at(0).method), 100.0 * mismatch.share, mismatch.mirrorPixels);
+  EXPECT_GT(mismatch.mirrorPixels, 50000u);
+  EXPECT_LE(mismatch.share, 0.01);
+}
+
 // An object that was in the mirror's shadow, and so left out, moves into view: the very frame it can
 // appear it is searched again (from its stale seeds) and drawn as without the planner.
 TEST(Planner, AnObjectLeavingTheShadowReappearsTheFrameItCanBeSeen) {

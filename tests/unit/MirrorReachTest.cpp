@@ -65,8 +65,9 @@ TEST(MirrorReach, AnObjectBehindEveryTangentPlaneOfAPartCannotAppearInIt) {
   EXPECT_NEAR(reach.normalCosine, 1.0f, 1e-6f);
   const glm::vec3 eye(0.5f, 3.0f, 2.0f);
   EXPECT_FALSE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -2.0f, 0.0f}, 0.3f), eye)) << "below the plate";
-  EXPECT_TRUE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -1.0f, 0.0f}, 0.3f), eye))
-      << "below the plate's centre, but within reach of its corners' planes' bound";
+  EXPECT_FALSE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -0.6f, 0.0f}, 0.3f), eye))
+      << "just below: a flat part's tangent planes are one plane";
+  EXPECT_TRUE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -0.1f, 0.0f}, 0.3f), eye)) << "reaching above the plane";
   EXPECT_TRUE(passes::canAppearIn(reach, kIdentity, cube({3.0f, 1.0f, 0.0f}, 0.3f), eye)) << "above it";
   EXPECT_TRUE(passes::facesEye(reach, kIdentity, eye));
   EXPECT_FALSE(passes::facesEye(reach, kIdentity, {0.5f, -3.0f, 2.0f})) << "the eye below sees its back";
@@ -76,6 +77,42 @@ TEST(MirrorReach, AnObjectBehindEveryTangentPlaneOfAPartCannotAppearInIt) {
   // A transform that bends angles (stretched along one axis) skips the cone bound: kept.
   const glm::mat4 stretched = glm::scale(kIdentity, {1.0f, 1.0f, 3.0f});
   EXPECT_TRUE(passes::canAppearIn(reach, stretched, cube({0.0f, -2.0f, 0.0f}, 0.3f), eye));
+}
+
+// Brute force on a curved part: a cap of the unit sphere whose normals lie within about 35° of +y.
+// Every object left out must lie behind the tangent plane at every sampled point of the cap.
+TEST(MirrorReach, AnObjectLeftOutOfACurvedPartIsBehindEveryTangentPlane) {
+  scene::Mesh cap = scene::primitives::grid("cap", 1.0f, 1.0f, 8, 8);
+  for (scene::Vertex& vertex : cap.vertices) {
+    vertex.position = glm::normalize(glm::vec3(vertex.position.x, 1.0f, vertex.position.z));
+    vertex.normal = vertex.position;
+  }
+  const scene::MirrorParts parts = scene::MirrorParts::of(cap, scene::MirrorCurvature::Convex);
+  ASSERT_EQ(parts.parts.size(), 1u);
+  const passes::MirrorReach reach = passes::MirrorReach::ofMeshPart(cap, parts, 0, false);
+  ASSERT_GT(reach.normalCosine, 0.75f);
+  std::mt19937 random(20261203);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  const glm::mat4 placed = glm::rotate(glm::translate(kIdentity, {1.0f, 2.0f, -0.5f}), 0.7f, glm::normalize(glm::vec3(1, 2, 3))) *
+                           glm::scale(kIdentity, glm::vec3(1.5f));
+  int leftOut = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const glm::vec3 centre = glm::vec3(placed * glm::vec4(3.0f * unit(random), 2.0f * unit(random), 3.0f * unit(random), 1.0f));
+    const math::Bounds object = cube(centre, 0.05f + 0.3f * (unit(random) + 1.0f));
+    if (passes::canAppearIn(reach, placed, object, {0.0f, 10.0f, 0.0f})) continue;
+    ++leftOut;
+    const glm::mat3 normals = glm::transpose(glm::inverse(glm::mat3(placed)));
+    for (const scene::Vertex& vertex : cap.vertices) {
+      const glm::vec3 point(placed * glm::vec4(vertex.position, 1.0f));
+      const glm::vec3 normal = glm::normalize(normals * vertex.normal);
+      for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? object.high.x : object.low.x, (corner & 2) ? object.high.y : object.low.y,
+                          (corner & 4) ? object.high.z : object.low.z);
+        ASSERT_LE(glm::dot(p - point, normal), 1e-4f) << "trial " << trial << ": a corner in front of the cap";
+      }
+    }
+  }
+  EXPECT_GT(leftOut, 100) << "the test must leave some out to prove anything";
 }
 
 // Brute force: for random eyes and small objects, every object the test leaves out of a unit

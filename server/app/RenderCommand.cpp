@@ -140,7 +140,8 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     text += "tessellation: " + std::to_string(tessellation.inputTriangles) + " -> " +
             std::to_string(tessellation.finishedTriangles) + " triangles; working per round";
     for (std::uint32_t count : tessellation.trianglesPerRound) text += " " + std::to_string(count);
-    text += "; " + std::to_string(tessellation.midpointSearches.searched) + " midpoint searches; " +
+    text += "; " + std::to_string(tessellation.midpointSearches.searched) + " midpoint searches (" +
+            std::to_string(tessellation.midpointSearches.coldStarts) + " from the pyramid); " +
             std::to_string(tessellation.predictedUnsplitObjects) + " objects planned unsplit (no edge image can reach the threshold)";
     text += tessellation.capped ? "; CAPPED at the triangle limit: raise --threshold or lower --level\n" : "\n";
   }

@@ -76,10 +76,11 @@ PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRa
   // always` on the built-in scenes at 320x240, 640x480 and 1280x720 (README, "Search or ray-cast").
   // Casting: one draw per reflected object over the part's pixels (fits within 30 %). Searching: a
   // share of the pyramid and the tessellation rounds' readbacks, the virtual objects' raster over
-  // the part, and per reflected vertex and triangle the search, tessellation and drawing; how much
-  // a mesh splits is not known before the frame, so the kitchen and ufo take 2-5x this.
+  // the part, and per reflected vertex and triangle the search, tessellation and drawing. How much
+  // a mesh splits is not known before the frame: the per-triangle cost is the ufo's, which splits
+  // much (the kitchen's concave part splits more, teapot-table's meshes hardly: 2x under, 2.5x over).
   constexpr double kCastPerDraw = 0.021, kCastPerPixelAndObject = 5.1e-5;
-  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3, kSearchPerTriangle = 2.0e-3;
+  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3, kSearchPerTriangle = 4.5e-3;
   PartCost cost;
   cost.search = kSearchPerPart + kSearchPerPixel * pixels;
   for (const ReflectionSlotRange* range : reflected) {

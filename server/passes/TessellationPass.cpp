@@ -105,7 +105,8 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const Planned
   statistics.inputTriangles += static_cast<std::uint32_t>(total);
   // Sized for every reflected triangle when that fits (the working lists too, below), so which
   // objects the plan leaves unsplit this frame does not grow the buffers from one frame to the next.
-  const std::size_t sized = std::max(total, std::min(everyTriangle, TessellationBuffers::kMaxTriangles));
+  const std::size_t sizedFor = std::min(everyTriangle, TessellationBuffers::kMaxTriangles);
+  const std::size_t sized = std::max(total, sizedFor);
   if (!buffers.reserveSplits(sized) || !buffers.reserveRequests(sized, mirror.reflected.size())) {
     statistics.capped = true;
     for (const ObjectRun& run : runs) drawFromMesh(run.range);
@@ -161,7 +162,7 @@ void TessellationPass::tessellateMirror(const FrameContext& frame, const Planned
     // (they fit the share, since the last round's check counted them as children).
     if (!last && children > 0 &&
         (buffers.finishedCount() + unsplit + children > finishedBudget ||
-         !buffers.reserveWorking(to, std::max(children, std::min(everyTriangle, TessellationBuffers::kMaxTriangles)))))
+         !buffers.reserveWorking(to, std::max(children, sizedFor))))
       last = true;
     if (last && round < settings.maxLevel) statistics.capped = true;
     if (last) {

@@ -59,6 +59,25 @@ PlannedAndEverything renderBoth(const std::shared_ptr<const scene::Scene>& scene
   return result;
 }
 
+// The scene at t = 0 with default settings (the planner's own choices), and how it compares with the
+// ray tracer's image.
+struct DefaultFrame {
+  render::RenderedFrame frame;
+  specula::testing::MirrorMismatch mismatch;
+};
+DefaultFrame defaultFrameAgainstRayTracer(const std::shared_ptr<const scene::Scene>& scene) {
+  DefaultFrame result;
+  specula::testing::Rig rig = specula::testing::makeRig(scene);
+  if (!rig.renderer) return result;
+  const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+  auto rendered = rig.renderer->render(pose, kWidth, kHeight);
+  EXPECT_TRUE(rendered) << rendered.error();
+  if (!rendered) return result;
+  result.frame = std::move(*rendered);
+  result.mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, result.frame);
+  return result;
+}
+
 std::size_t culledVertices(const render::RenderedFrame& frame) {
   std::size_t culled = 0;
   for (const render::MirrorPlanSummary& mirror : frame.plan) culled += mirror.culledVertices;
@@ -320,14 +339,7 @@ TEST(Planner, AFlatMirrorSeenEdgeOnOrGrazingKeepsThePicture) {
       EXPECT_TRUE(std::isfinite(part.projectedPixels));
       EXPECT_GE(part.culledObjects, 1u) << "the ball below the panel is behind it";
     }
-    auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
-    ASSERT_TRUE(context) << context.error();
-    auto renderer = render::Renderer::create(**context, scene);
-    ASSERT_TRUE(renderer) << renderer.error();
-    const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
-    auto planned = (*renderer)->render(pose, kWidth, kHeight);
-    ASSERT_TRUE(planned) << planned.error();
-    const specula::testing::MirrorMismatch mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
+    const specula::testing::MirrorMismatch mismatch = defaultFrameAgainstRayTracer(scene).mismatch;
     std::printf("flat panel, eye at height %.2f: %zu pixels differ from --plan everything; %.2f %% of %zu mirror pixels from the "
                 "ray tracer\n",
                 static_cast<double>(eyeHeight), frames.differingPixels, 100.0 * mismatch.share, mismatch.mirrorPixels);
@@ -362,16 +374,11 @@ TEST(Planner, AHugeMirrorAroundTheEyesBoundsKeepsThePicture) {
   EXPECT_EQ(frames.needed.tessellation.predictedUnsplitObjects, 0u);
   EXPECT_LE(frames.differingPixels, 2u);
 
-  auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
-  ASSERT_TRUE(context) << context.error();
-  auto renderer = render::Renderer::create(**context, scene);
-  ASSERT_TRUE(renderer) << renderer.error();
-  const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
-  auto planned = (*renderer)->render(pose, kWidth, kHeight);
-  ASSERT_TRUE(planned) << planned.error();
-  const specula::testing::MirrorMismatch mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
+  const DefaultFrame planned = defaultFrameAgainstRayTracer(scene);
+  ASSERT_EQ(planned.frame.plan.size(), 1u);
+  const specula::testing::MirrorMismatch& mismatch = planned.mismatch;
   std::printf("huge mirror: %zu pixels differ from --plan everything; planned (%s) %.2f %% of %zu mirror pixels from the ray tracer\n",
-              frames.differingPixels, passes::partMethodName(planned->plan.at(0).method), 100.0 * mismatch.share, mismatch.mirrorPixels);
+              frames.differingPixels, passes::partMethodName(planned.frame.plan[0].method), 100.0 * mismatch.share, mismatch.mirrorPixels);
   EXPECT_GT(mismatch.mirrorPixels, 50000u);
   EXPECT_LE(mismatch.share, 0.01);
 }

@@ -35,9 +35,9 @@ TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip
 }  // namespace
 
 Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::GlApi& gl) {
-  auto mesh = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer.frag"});
+  auto mesh = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-mesh.frag"});
   if (!mesh) return Error{mesh.error()};
-  auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer.frag"});
+  auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer-quadric.frag"});
   if (!quadric) return Error{quadric.error()};
   return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(quadric.value())));
 }
@@ -60,11 +60,11 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   gl.DepthFunc(GL_LESS);
   gl.DepthMask(GL_TRUE);
   gl.Enable(GL_SCISSOR_TEST);
-  for (const gl::ShaderProgram* program : {&mesh_, &quadric_}) {
-    program->use();
-    program->set("worldToClip", worldToClip);
-    program->set("eyePosition", frame.pose.camera.eye);
-  }
+  mesh_.use();
+  mesh_.set("worldToClip", worldToClip);
+  quadric_.use();
+  quadric_.set("worldToClip", worldToClip);
+  quadric_.set("eyePosition", frame.pose.camera.eye);
 
   for (const PlannedMirror& planned : frame.plan.mirrors) {
     const MirrorSlots* mirror = planned.slots;
@@ -97,7 +97,6 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     mesh_.use();
     mesh_.set("objectToWorld", objectToWorld);
     mesh_.set("normalToWorld", math::normalMatrix(objectToWorld));
-    setMirrorQuadric(mesh_, info, objectToWorld);
     // A mirror of several parts draws them all for depth, and marks only this part's texels.
     mesh_.set("part", mirror->partCount > 1 ? mirror->part : -1);
     if (mirror->partCount > 1)

@@ -126,13 +126,13 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     char line[512];
     std::snprintf(line, sizeof line,
                   "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left out "
-                  "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast; predicted "
-                  "on llvmpipe: searching %.1f ms, ray-casting %.1f ms\n",
+                  "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast; cast on %zu of "
+                  "%zu object tiles; predicted on llvmpipe: searching %.1f ms, ray-casting %.1f ms\n",
                   scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
                   methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,
                   mirror.culledVertices, mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow",
                   mirror.belowBudgetObjects, mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels),
-                  mirror.uncoveredRayCast, mirror.predictedCost.search, mirror.predictedCost.rayCast);
+                  mirror.uncoveredRayCast, mirror.castTiles.listed, mirror.castTiles.possible, mirror.predictedCost.search, mirror.predictedCost.rayCast);
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;

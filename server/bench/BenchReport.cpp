@@ -73,6 +73,8 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"culled_vertices", std::to_string(r.culledVertices)});
   f.push_back({"below_budget_vertices", std::to_string(r.belowBudgetVertices)});
   f.push_back({"uncovered_ray_cast_px", std::to_string(r.uncoveredRayCast)});
+  f.push_back({"cast_object_tiles", std::to_string(r.castTiles.listed)});
+  f.push_back({"cast_object_tiles_possible", std::to_string(r.castTiles.possible)});
   const auto& e = r.pointError;
   f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
   f.push_back({"point_error_mean_px", e ? significant(e->mean) : ""});
@@ -345,7 +347,8 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
     table += "  plan (last frame): " + std::to_string(r.plannedParts) + " mirror parts, " + std::to_string(r.rayCastParts) +
              " ray-cast, " + std::to_string(r.culledVertices) + " reflected vertices left out, " +
              std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
-             " uncovered pixels ray-cast\n";
+             " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
+             std::to_string(r.castTiles.possible) + " object tiles\n";
   }
   return table;
 }

@@ -141,6 +141,8 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
     result.culledVertices += part.culledVertices;
     result.belowBudgetVertices += part.belowBudgetVertices;
     result.uncoveredRayCast += part.uncoveredRayCast;
+    result.castTiles.listed += part.castTiles.listed;
+    result.castTiles.possible += part.castTiles.possible;
   }
   if (measurePoints && !pointErrors.pixels.empty()) {  // none where every mirror was ray-cast
     result.pointError = SceneBenchResult::PointError{pointErrors.pixels.size(), pointErrors.mean(),

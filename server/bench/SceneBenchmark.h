@@ -9,6 +9,7 @@
 
 #include "base/Result.h"
 #include "gl/GlContext.h"
+#include "passes/FramePlan.h"
 #include "passes/ReflectionSettings.h"
 #include "render/FrameTimings.h"
 #include "scene/Scene.h"
@@ -51,6 +52,7 @@ struct SceneBenchResult {
   std::size_t plannedParts = 0, rayCastParts = 0, culledVertices = 0;
   std::size_t belowBudgetVertices = 0;  // last frame: of objects whose image is under the error budget
   std::size_t uncoveredRayCast = 0;  // last frame: pixels no virtual object covered, ray-cast instead
+  passes::CastTileCount castTiles;   // last frame, all ray-cast parts: object tiles cast on, of possible
 
   // Reflection-point error in pixels over all frames; absent without an analytic sphere mirror.
   struct PointError {

@@ -62,4 +62,22 @@ using GlFramebuffer = GlObject<GlObjectType::Framebuffer>;
 using GlVertexArray = GlObject<GlObjectType::VertexArray>;
 using GlQuery = GlObject<GlObjectType::Query>;
 
+// A buffer that only grows: storage for the largest size asked for so far, so that frames of one
+// size allocate once. Contents are undefined after a reserve that grows it.
+class GlGrowingBuffer {
+ public:
+  explicit GlGrowingBuffer(const GlApi& gl) : buffer_(gl) {}
+  GLuint id() const { return buffer_.id(); }
+  void reserve(const GlApi& gl, GLsizeiptr bytes) {
+    if (bytes <= bytes_) return;
+    gl.BindBuffer(GL_COPY_WRITE_BUFFER, buffer_.id());
+    gl.BufferData(GL_COPY_WRITE_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
+    bytes_ = bytes;
+  }
+
+ private:
+  GlBuffer buffer_;
+  GLsizeiptr bytes_ = 0;
+};
+
 }  // namespace specula::gl

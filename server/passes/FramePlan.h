@@ -26,6 +26,12 @@ const char* partMethodName(PartMethod method);
 
 // What a mirror part's reflection is predicted to cost by each method, in milliseconds on llvmpipe:
 // only their ratio decides. A GPU's ratio has not been measured.
+// A ray-cast part's tile classification: object tiles cast on, of objects × the part's tiles (all
+// `possible` where the part was not classified).
+struct CastTileCount {
+  std::size_t listed = 0, possible = 0;
+};
+
 struct PartCost {
   double search = 0.0;   // search, tessellation and virtual objects
   double rayCast = 0.0;  // a cast per pixel and reflected object

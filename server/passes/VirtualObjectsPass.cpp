@@ -15,6 +15,10 @@ namespace specula::passes {
 namespace {
 // Virtual vertices lie a whole path (eye → mirror → object) away: push the far plane out.
 constexpr float kVirtualFarScale = 3.0f;
+constexpr int kCastTile = 8;        // pixels per side of a ray-cast tile (ray-cast-tiles.comp)
+constexpr std::size_t kCastTileGroup = 64;  // tiles per work group (ray-cast-tiles.comp)
+// Tile-list entries of one frame (16 MiB): parts past it cast every object over all their pixels.
+constexpr std::size_t kCastTileListBudget = std::size_t{4} << 20;
 }  // namespace
 
 Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl::GlApi& gl) {
@@ -28,6 +32,10 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   if (!region) return Error{region.error()};
   auto rayCast = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/ray-cast.frag"});
   if (!rayCast) return Error{rayCast.error()};
+  auto rayCastTiles = gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tile.vert", "virtual-objects/ray-cast.frag"});
+  if (!rayCastTiles) return Error{rayCastTiles.error()};
+  auto classifyTiles = gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tiles.comp"});
+  if (!classifyTiles) return Error{classifyTiles.error()};
   auto findUncovered = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/uncovered-pixels.frag"});
   if (!findUncovered) return Error{findUncovered.error()};
   auto uncoveredPixel = gl::ShaderProgram::build(gl, {"virtual-objects/uncovered-pixel.vert", "virtual-objects/ray-cast.frag"});
@@ -36,6 +44,7 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   if (!composite) return Error{composite.error()};
   return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
                                                                     std::move(region.value()), std::move(rayCast.value()),
+                                                                    std::move(rayCastTiles.value()), std::move(classifyTiles.value()),
                                                                     std::move(findUncovered.value()), std::move(uncoveredPixel.value()),
                                                                     std::move(composite.value())));
 }
@@ -73,6 +82,27 @@ std::vector<std::uint32_t> VirtualObjectsPass::readUncoveredCounts() const {
   if (counts.empty()) return counts;
   gl_->BindBuffer(GL_COPY_READ_BUFFER, uncoveredCounts_.id());
   gl_->GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(counts.size() * sizeof(std::uint32_t)), counts.data());
+  return counts;
+}
+
+std::vector<CastTileCount> VirtualObjectsPass::readCastTileCounts() const {
+  std::vector<CastTileCount> counts(castParts_.size());
+  std::size_t commands = 0;
+  for (const CastPart& part : castParts_) commands += part.tiled ? part.objects.size() : 0;
+  std::vector<DrawCommand> draws(commands);
+  if (commands > 0) {
+    gl_->BindBuffer(GL_COPY_READ_BUFFER, castDraws_.id());
+    gl_->GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(commands * sizeof(DrawCommand)), draws.data());
+  }
+  for (std::size_t i = 0; i < castParts_.size(); ++i) {
+    const CastPart& part = castParts_[i];
+    counts[i].possible = part.objects.size() * part.tileCapacity;
+    if (!part.tiled) {
+      counts[i].listed = counts[i].possible;
+      continue;
+    }
+    for (std::size_t k = 0; k < part.objects.size(); ++k) counts[i].listed += draws[part.firstObject + k].instances;
+  }
   return counts;
 }
 
@@ -151,24 +181,14 @@ void VirtualObjectsPass::rayCast(const FrameContext& frame, const MirrorSlots& m
   frame.gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror,
-                                        std::size_t objectIndex) const {
-  const gl::GlApi& gl = frame.gl;
+void VirtualObjectsPass::setCastRay(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror) {
   ReflectionResources& resources = frame.reflections;
-  const scene::SceneObject& object = frame.scene.objects[objectIndex];
-  const ReflectionResources::MeshBvh& bvh = resources.meshBvh(object.mesh);
-  const glm::mat4& objectToWorld = frame.pose.objectToWorld[objectIndex];
   program.use();  // the G-buffer textures are bound by execute()
   program.set("gbufferPosition", 0);
   program.set("gbufferNormal", 1);
   setGBufferPixelMapping(program, resources);
   program.set("layer", mirror.layer);
   program.set("eyePosition", frame.pose.camera.eye);
-  program.set("objectToWorld", objectToWorld);
-  program.set("worldToObject", glm::inverse(objectToWorld));
-  program.set("normalToWorld", math::normalMatrix(objectToWorld));
-  program.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-  program.set("minDistance", bvh.minDistance);
   // The G-buffer point's own error: half a texel where pixel centres fall between texels, and the
   // rounding of half floats at the mirror's largest coordinate.
   const float pixelAngle = 2.0f * std::tan(glm::radians(frame.pose.camera.fovYDegrees) * 0.5f) / static_cast<float>(frame.target.height());
@@ -178,6 +198,21 @@ void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::Sha
   const math::Bounds& mirrorBounds = frame.worldBounds[mirror.mirrorObject];
   const float largestCoordinate = glm::compMax(glm::max(glm::abs(mirrorBounds.low), glm::abs(mirrorBounds.high)));
   program.set("lift", frame.plan.gbufferPrecision == GBufferPrecision::Float16 ? largestCoordinate / 2048.0f : 0.0f);
+}
+
+void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror,
+                                        std::size_t objectIndex) const {
+  const gl::GlApi& gl = frame.gl;
+  const scene::SceneObject& object = frame.scene.objects[objectIndex];
+  const ReflectionResources::MeshBvh& bvh = frame.reflections.meshBvh(object.mesh);
+  const glm::mat4& objectToWorld = frame.pose.objectToWorld[objectIndex];
+  setCastRay(frame, program, mirror);
+  program.set("firstHit", -1);  // no nearest-hit bound unless setNearestHits follows
+  program.set("objectToWorld", objectToWorld);
+  program.set("worldToObject", glm::inverse(objectToWorld));
+  program.set("normalToWorld", math::normalMatrix(objectToWorld));
+  program.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
+  program.set("minDistance", bvh.minDistance);
   program.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
   setSceneLighting(program, frame.scene);
   setMaterial(program, frame.scene.materials[object.material]);
@@ -186,6 +221,104 @@ void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::Sha
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, frame.meshes.vertexBuffer(object.mesh));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, frame.meshes.indexBuffer(object.mesh));
   gl.BindVertexArray(emptyVertexArray_.id());
+}
+
+void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
+  const gl::GlApi& gl = frame.gl;
+  castParts_.assign(frame.plan.mirrors.size(), CastPart{});
+  std::vector<glm::vec4> spheres;
+  std::size_t entries = 0, pixelCount = 0;
+  for (std::size_t partIndex = 0; partIndex < frame.plan.mirrors.size(); ++partIndex) {
+    const PlannedMirror& planned = frame.plan.mirrors[partIndex];
+    if (planned.method != PartMethod::RayCast) continue;
+    const MirrorSlots& mirror = *planned.slots;
+    CastPart& part = castParts_[partIndex];
+    if (mirror.seesItself) part.objects.push_back(mirror.mirrorObject);
+    for (const ReflectionSlotRange* range : planned.reflected) part.objects.push_back(range->object);
+    // Nearest to the mirror first: their hits then bound the later objects' traversals (nearestHit_).
+    const glm::vec3 mirrorCentre = frame.worldBounds[mirror.mirrorObject].center();
+    const auto nearestReach = [&](std::size_t object) {
+      const math::Bounds& bounds = frame.worldBounds[object];
+      return glm::length(bounds.center() - mirrorCentre) - 0.5f * glm::length(bounds.high - bounds.low);
+    };
+    std::stable_sort(part.objects.begin(), part.objects.end(),
+                     [&](std::size_t a, std::size_t b) { return nearestReach(a) < nearestReach(b); });
+    const PixelRect pixels = framePixels(frame.reflections.coveredFramePixels(mirror.layer), frame);
+    part.firstTile = pixels.low / kCastTile;
+    part.tileExtent = (pixels.high + kCastTile - 1) / kCastTile - part.firstTile;
+    part.tileCapacity = static_cast<std::size_t>(part.tileExtent.x) * static_cast<std::size_t>(part.tileExtent.y);
+    const std::size_t needed = part.objects.size() * part.tileCapacity;
+    // A part whose lists would pass the budget casts every object over all its pixels instead.
+    part.tiled = frame.settings.castTiles && !part.objects.empty() && part.tileCapacity > 0 && entries + needed <= kCastTileListBudget;
+    if (!part.tiled) continue;
+    part.firstObject = spheres.size();
+    part.firstEntry = entries;
+    entries += needed;
+    part.pixelLow = pixels.low;
+    part.pixelHigh = pixels.high;
+    part.firstHit = pixelCount;
+    pixelCount += static_cast<std::size_t>(pixels.size().x) * static_cast<std::size_t>(pixels.size().y);
+    for (const std::size_t object : part.objects) {
+      const math::Bounds& bounds = frame.worldBounds[object];
+      spheres.emplace_back(bounds.center(), 0.5f * glm::length(bounds.high - bounds.low));
+    }
+  }
+  if (spheres.empty()) return;
+  castTileLists_.reserve(gl, static_cast<GLsizeiptr>(entries * sizeof(std::uint32_t)));
+  nearestHits_.reserve(gl, static_cast<GLsizeiptr>(pixelCount * sizeof(std::uint32_t)));
+  const std::vector<DrawCommand> noTilesYet(spheres.size(), DrawCommand{6, 0, 0, 0});
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, castObjects_.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(spheres.size() * sizeof(glm::vec4)), spheres.data(), GL_STREAM_DRAW);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, castDraws_.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(noTilesYet.size() * sizeof(DrawCommand)), noTilesYet.data(),
+                GL_STREAM_DRAW);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, castObjects_.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, castDraws_.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, castTileLists_.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, nearestHits_.id());
+  // Every part classified back to back before any cast is drawn: llvmpipe runs a dispatch only
+  // after the draws queued before it, so one per part between draws would serialise the frame.
+  for (std::size_t partIndex = 0; partIndex < castParts_.size(); ++partIndex) {
+    const CastPart& part = castParts_[partIndex];
+    if (!part.tiled) continue;
+    setCastRay(frame, classifyTiles_, *frame.plan.mirrors[partIndex].slots);
+    setNearestHits(classifyTiles_, part);
+    classifyTiles_.set("firstTile", part.firstTile);
+    classifyTiles_.set("tileExtent", part.tileExtent);
+    classifyTiles_.set("firstObject", static_cast<int>(part.firstObject));
+    classifyTiles_.set("objectCount", static_cast<int>(part.objects.size()));
+    classifyTiles_.set("firstEntry", static_cast<unsigned>(part.firstEntry));
+    classifyTiles_.set("tileCapacity", static_cast<unsigned>(part.tileCapacity));
+    gl.DispatchCompute(static_cast<GLuint>((part.tileCapacity + kCastTileGroup - 1) / kCastTileGroup), 1, 1);
+  }
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void VirtualObjectsPass::setNearestHits(const gl::ShaderProgram& program, const CastPart& part) {
+  program.set("hitPixelLow", part.pixelLow);
+  program.set("hitPixelHigh", part.pixelHigh);
+  program.set("firstHit", static_cast<int>(part.firstHit));
+}
+
+void VirtualObjectsPass::rayCastPart(const FrameContext& frame, std::size_t partIndex) const {
+  const gl::GlApi& gl = frame.gl;
+  const CastPart& part = castParts_[partIndex];
+  const MirrorSlots& mirror = *frame.plan.mirrors[partIndex].slots;
+  if (!part.tiled) {
+    for (const std::size_t object : part.objects) rayCast(frame, mirror, object);
+    return;
+  }
+  gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, castDraws_.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, castTileLists_.id());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, nearestHits_.id());
+  for (std::size_t k = 0; k < part.objects.size(); ++k) {
+    prepareRayCast(frame, rayCastTiles_, mirror, part.objects[k]);
+    setNearestHits(rayCastTiles_, part);
+    rayCastTiles_.set("listBase", static_cast<unsigned>(part.firstEntry + k * part.tileCapacity));
+    rayCastTiles_.set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
+    gl.DrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>((part.firstObject + k) * sizeof(DrawCommand)));
+  }
+  gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 VirtualObjectsPass::PixelRect VirtualObjectsPass::framePixels(const glm::vec4& rect, const FrameContext& frame) {
@@ -247,6 +380,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.normalTexture());
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.positionTexture());
+  classifyCastTiles(frame);
   for (const gl::ShaderProgram* objects : {&objects_, &tessellated_}) {
     objects->use();
     objects->set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
@@ -294,8 +428,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
       case PartMethod::OwnColour:  // the composite adds the background it reflects
         break;
       case PartMethod::RayCast:
-        if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
-        for (const ReflectionSlotRange* range : planned.reflected) rayCast(frame, *mirror, range->object);
+        rayCastPart(frame, partIndex);
         break;
       case PartMethod::VirtualObjects:
         if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);

@@ -22,26 +22,36 @@ class VirtualObjectsPass final : public Pass {
   // Per part of the last frame's plan, the pixels its virtual objects left uncovered that were
   // ray-cast (settings.rayCastUncovered; 0 for ray-cast parts). A GPU readback.
   std::vector<std::uint32_t> readUncoveredCounts() const;
+  // Per part of the last frame's plan, its ray cast's tile counts (zero for parts not ray-cast). A GPU readback.
+  std::vector<CastTileCount> readCastTileCounts() const;
 
  private:
   VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region,
-                     gl::ShaderProgram rayCast, gl::ShaderProgram findUncovered, gl::ShaderProgram uncoveredPixel,
+                     gl::ShaderProgram rayCast, gl::ShaderProgram rayCastTiles, gl::ShaderProgram classifyTiles,
+                     gl::ShaderProgram findUncovered, gl::ShaderProgram uncoveredPixel,
                      gl::ShaderProgram composite)
       : gl_(&gl),
         objects_(std::move(objects)),
         tessellated_(std::move(tessellated)),
         region_(std::move(region)),
         rayCast_(std::move(rayCast)),
+        rayCastTiles_(std::move(rayCastTiles)),
+        classifyTiles_(std::move(classifyTiles)),
         findUncovered_(std::move(findUncovered)),
         uncoveredPixel_(std::move(uncoveredPixel)),
         composite_(std::move(composite)),
         emptyVertexArray_(gl),
         framebuffer_(gl),
         reflection_(gl),
+
         stencilOnly_(gl),
         uncovered_(gl),
         reflectedBoxes_(gl),
-        uncoveredCounts_(gl) {}
+        uncoveredCounts_(gl),
+        castObjects_(gl),
+        castDraws_(gl),
+        castTileLists_(gl),
+        nearestHits_(gl) {}
   struct PixelRect {
     glm::ivec2 low, high;  // frame pixels, high exclusive
     glm::ivec2 size() const { return high - low; }
@@ -56,6 +66,12 @@ class VirtualObjectsPass final : public Pass {
   // Casts the part's reflected rays against one object's mesh (the mirror's own where it sees itself)
   // and draws the nearest hits at their depth.
   void rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t object) const;
+  // For every ray-cast part, lists per object the 8×8 tiles whose rays may reach it (castParts_).
+  void classifyCastTiles(const FrameContext& frame);
+  // Casts a ray-cast part's objects, nearest to the mirror first, each on its listed tiles only.
+  void rayCastPart(const FrameContext& frame, std::size_t partIndex) const;
+  // Uses `program` with the uniforms of the part's reflected rays (virtual-objects/cast-ray.glsl).
+  static void setCastRay(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror);
   // Ray-casts against the part's reflected objects the pixels its virtual objects left uncovered, or
   // on an environment-map part those its cube map cannot serve within the error budget; their
   // number goes to uncoveredCounts_[partIndex].
@@ -83,6 +99,8 @@ class VirtualObjectsPass final : public Pass {
   gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles
   gl::ShaderProgram region_;
   gl::ShaderProgram rayCast_;         // over a full-screen triangle
+  gl::ShaderProgram rayCastTiles_;    // over the tiles an object's list names
+  gl::ShaderProgram classifyTiles_;   // lists each object's tiles
   gl::ShaderProgram findUncovered_;   // lists a part's uncovered pixels
   gl::ShaderProgram uncoveredPixel_;  // ray-cast.frag at the listed pixels, drawn as points
   gl::ShaderProgram composite_;
@@ -99,6 +117,25 @@ class VirtualObjectsPass final : public Pass {
   gl::GlBuffer reflectedBoxes_;  // world bounds of the part's reflected objects (uncovered-pixels.frag)
   gl::GlBuffer uncoveredCounts_;  // one uint per planned part
   std::size_t plannedParts_ = 0;
+  struct CastPart {  // one planned part's ray cast this frame
+    std::vector<std::size_t> objects;  // in draw order: nearest to the mirror first
+    bool tiled = false;                // false: each object over all the part's pixels
+    glm::ivec2 firstTile{0}, tileExtent{0};
+    std::size_t tileCapacity = 0;  // tiles of the part's pixels: each object's list has room for all
+    std::size_t firstObject = 0;   // its objects' first sphere and DrawCommand
+    std::size_t firstEntry = 0;    // its objects' first list entry
+    glm::ivec2 pixelLow{0}, pixelHigh{0};  // its pixels, whose nearest hits it keeps
+    std::size_t firstHit = 0;              // their first entry in nearestHits_, row by row
+  };
+  // Sets the uniforms by which `program` finds the part's nearest hits (cast-ray.glsl).
+  static void setNearestHits(const gl::ShaderProgram& program, const CastPart& part);
+  std::vector<CastPart> castParts_;  // per planned part
+  gl::GlBuffer castObjects_;    // world bounding spheres of every tiled part's objects
+  gl::GlBuffer castDraws_;      // a DrawCommand per object: two triangles per listed tile
+  gl::GlGrowingBuffer castTileLists_;  // per object, room for every tile of its part
+  // Per pixel of each tiled part, the nearest hit distance cast so far (float bits), which bounds
+  // the traversal of the objects cast after it.
+  gl::GlGrowingBuffer nearestHits_;
 };
 
 }  // namespace specula::passes

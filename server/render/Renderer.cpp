@@ -161,6 +161,11 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     const std::vector<std::uint32_t> uncovered = virtualObjects_->readUncoveredCounts();
     for (std::size_t i = 0; i < uncovered.size() && i < result.plan.size(); ++i) result.plan[i].uncoveredRayCast = uncovered[i];
   }
+  if (std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
+                  [](const passes::PlannedMirror& mirror) { return mirror.method == passes::PartMethod::RayCast; })) {
+    const std::vector<passes::CastTileCount> tiles = virtualObjects_->readCastTileCounts();
+    for (std::size_t i = 0; i < tiles.size() && i < result.plan.size(); ++i) result.plan[i].castTiles = tiles[i];
+  }
   mark(marks - 1);
   // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
   if (plan.search) result.search = reflections_.readStatistics();

@@ -42,6 +42,8 @@ struct MirrorPlanSummary {
   std::size_t belowBudgetObjects = 0, belowBudgetVertices = 0;  // images smaller than the error budget
   std::size_t uncoveredRayCast = 0;  // pixels no virtual object covered, ray-cast instead (searched parts)
   passes::PartCost predictedCost;     // what chose between searching and ray-casting
+  // Ray-cast parts: the 8×8 tiles its objects were cast on, of objects × the part's tiles.
+  passes::CastTileCount castTiles;
 };
 
 struct RenderedFrame {

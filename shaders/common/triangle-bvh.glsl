@@ -1,5 +1,6 @@
 // The nearest hit of a ray with a mirror's own mesh through its bounding-volume hierarchy: the
-// GLSL twin of math::TriangleBvh::intersect (same layout, same Möller–Trumbore test).
+// GLSL twin of math::TriangleBvh::intersect (same layout, same Möller–Trumbore test, same nearest
+// hit; this one opens the nearer child first, which only changes how soon it is found).
 
 struct BvhNode {
   vec3 low;
@@ -25,28 +26,57 @@ layout(std430, binding = 5) readonly buffer BvhTriangles {
 
 const int kBvhStackSize = 32;  // math::TriangleBvh::kMaxDepth
 
-bool bvhBoxHit(BvhNode node, vec3 origin, vec3 inverseDirection, float tMin, float tMax) {
+// Where the ray enters the node's box within (tMin, tMax), or a negative value when it misses it.
+float bvhBoxEntry(BvhNode node, vec3 origin, vec3 inverseDirection, float tMin, float tMax) {
   vec3 t0 = (node.low - origin) * inverseDirection, t1 = (node.high - origin) * inverseDirection;
   vec3 near = min(t0, t1), far = max(t0, t1);
-  return max(max(near.x, near.y), max(near.z, tMin)) <= min(min(far.x, far.y), min(far.z, tMax));
+  float entry = max(max(near.x, near.y), max(near.z, tMin));
+  return entry <= min(min(far.x, far.y), min(far.z, tMax)) ? entry : -1.0;
 }
 
 // Distance (in units of `direction`) in (tMin, tMax), the mesh's triangle and the barycentric
-// weights of its second and third corners; false when nothing is hit.
+// weights of its second and third corners; false when nothing is hit. Front to back: of an inner
+// node's children the nearer is visited first, and a node entered beyond the nearest hit so far is
+// skipped, so a hit prunes the rest of the tree instead of every box being opened.
 bool intersectBvh(vec3 origin, vec3 direction, float tMin, float tMax, out float distance, out uint triangle,
                   out vec2 barycentric) {
   vec3 inverseDirection = 1.0 / direction;
   uint stack[kBvhStackSize];
+  float stackEntry[kBvhStackSize];
   int depth = 0;
-  stack[depth++] = 0u;
+  float rootEntry = bvhBoxEntry(bvhNodes[0], origin, inverseDirection, tMin, tMax);
+  if (rootEntry >= 0.0) {
+    stack[depth] = 0u;
+    stackEntry[depth++] = rootEntry;
+  }
   bool hit = false;
   while (depth > 0) {
-    BvhNode node = bvhNodes[stack[--depth]];
-    if (!bvhBoxHit(node, origin, inverseDirection, tMin, tMax)) continue;
+    --depth;
+    if (stackEntry[depth] > tMax) continue;  // entered beyond the nearest hit found since it was pushed
+    BvhNode node = bvhNodes[stack[depth]];
     if (node.count == 0u) {
+      float first = bvhBoxEntry(bvhNodes[node.first], origin, inverseDirection, tMin, tMax);
+      float second = bvhBoxEntry(bvhNodes[node.first + 1u], origin, inverseDirection, tMin, tMax);
       if (depth + 2 > kBvhStackSize) continue;  // cannot happen for a tree built within kMaxDepth
-      stack[depth++] = node.first;
-      stack[depth++] = node.first + 1u;
+      bool secondNearer = second >= 0.0 && (first < 0.0 || second < first);
+      // Pushed far, then near: the near child is popped first.
+      if (secondNearer) {
+        if (first >= 0.0) {
+          stack[depth] = node.first;
+          stackEntry[depth++] = first;
+        }
+        stack[depth] = node.first + 1u;
+        stackEntry[depth++] = second;
+      } else {
+        if (second >= 0.0) {
+          stack[depth] = node.first + 1u;
+          stackEntry[depth++] = second;
+        }
+        if (first >= 0.0) {
+          stack[depth] = node.first;
+          stackEntry[depth++] = first;
+        }
+      }
       continue;
     }
     for (uint i = node.first; i < node.first + node.count; ++i) {

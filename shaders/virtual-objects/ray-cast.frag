@@ -7,25 +7,16 @@
 // part the frame plan ray-casts instead of searching (a mirror covering few pixels), and the pixels
 // of a searched part that no virtual object landed on (drawn as points, uncovered-pixel.vert).
 #include "common/clip-depth.glsl"
-#include "common/gbuffer-texel.glsl"
 #include "common/shading.glsl"
 #include "common/triangle-bvh.glsl"
+#include "virtual-objects/cast-ray.glsl"
 
-uniform sampler2DArray gbufferPosition;  // w > 0 on this part's texels
-uniform sampler2DArray gbufferNormal;
-uniform int layer;
-uniform vec3 eyePosition;
 uniform mat4 objectToWorld;
 uniform mat4 worldToObject;
 uniform mat3 normalToWorld;
 uniform mat4 worldToClip;     // the virtual objects' projection (far plane pushed out)
 uniform float minDistance;    // object space: nearer hits are the surface the ray starts on
 uniform float reflectivity;  // the mirror's
-// How far the G-buffer point may lie off the true surface: per metre from the eye (bilinear between
-// texels that are not at the pixel centre) plus a constant (RGBA16F rounding). The ray starts that
-// far out on its own side, or a mirror seeing itself would meet its own surface where it starts.
-uniform float liftPerMetre;
-uniform float lift;
 
 layout(std430, binding = 6) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
@@ -42,17 +33,18 @@ vec3 attribute3(uint vertex, uint offset) {
 }
 
 void main() {
-  vec3 surface, normal;
-  if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, surface, normal)) discard;
-  vec3 incoming = normalize(surface - eyePosition);
-  vec3 reflected = reflect(incoming, normal);
+  vec3 surface, incoming, reflected;
+  if (!castRayAtPixel(gl_FragCoord.xy, surface, incoming, reflected)) discard;
   float distance;
   uint triangle;
   vec2 barycentric;
-  surface += (lift + liftPerMetre * length(surface - eyePosition)) * sign(dot(reflected, normal)) * normal;
-  if (!intersectBvh((worldToObject * vec4(surface, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, 1e30, distance,
-                    triangle, barycentric))
+  // The object-space ray is the world ray transformed, so distances along both are the same.
+  int hitEntry = nearestHitEntry(ivec2(gl_FragCoord.xy));
+  float nearestSoFar = hitEntry < 0 ? 1e30 : uintBitsToFloat(nearestHit[hitEntry]);
+  if (!intersectBvh((worldToObject * vec4(surface, 1.0)).xyz, mat3(worldToObject) * reflected, minDistance, nearestSoFar,
+                    distance, triangle, barycentric))
     discard;
+  if (hitEntry >= 0) atomicMin(nearestHit[hitEntry], floatBitsToUint(distance));
   uint i0 = meshIndex[3u * triangle], i1 = meshIndex[3u * triangle + 1u], i2 = meshIndex[3u * triangle + 2u];
   vec3 weights = vec3(1.0 - barycentric.x - barycentric.y, barycentric);
   vec3 position = weights.x * attribute3(i0, 0u) + weights.y * attribute3(i1, 0u) + weights.z * attribute3(i2, 0u);

@@ -78,8 +78,8 @@ struct ReflectionSettings {
   // Which parts have each pixel's reflected ray cast against their reflected objects (exact) instead
   // of searching the objects' every vertex.
   RayCastRule rayCast = RayCastRule::WhenCheaper;
-  // A ray-cast part casts each object only on the 8×8 tiles whose rays may reach its bounding
-  // sphere; off casts every object over the whole part (the reference the classification is tested against).
+  // A ray-cast part of several objects casts each only on the 8×8 tiles whose rays may reach its
+  // bounding sphere; off casts every object over the whole part (the reference the classification is tested against).
   bool castTiles = true;
   // A searched part's pixels no virtual object landed on (coverage gaps at silhouettes and rims)
   // have their reflected rays cast against the part's reflected objects; off shows the background.

@@ -248,8 +248,11 @@ void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
     part.tileExtent = (pixels.high + kCastTile - 1) / kCastTile - part.firstTile;
     part.tileCapacity = static_cast<std::size_t>(part.tileExtent.x) * static_cast<std::size_t>(part.tileExtent.y);
     const std::size_t needed = part.objects.size() * part.tileCapacity;
-    // A part whose lists would pass the budget casts every object over all its pixels instead.
-    part.tiled = frame.settings.castTiles && !part.objects.empty() && part.tileCapacity > 0 && entries + needed <= kCastTileListBudget;
+    // A part whose lists would pass the budget casts every object over all its pixels instead. So
+    // does a part of one object: on llvmpipe classifying its tiles costs what the tiles it leaves
+    // out would (checker-sphere and quad, whose one object covers a third to half of the mirror).
+    part.tiled = frame.settings.castTiles && part.objects.size() >= 2 && part.tileCapacity > 0 &&
+                 entries + needed <= kCastTileListBudget;
     if (!part.tiled) continue;
     part.firstObject = spheres.size();
     part.firstEntry = entries;

@@ -147,7 +147,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part,   mirror.slots->kind,     mirror.method,
                               mirror.projectedPixels,     mirror.facesAway,     mirror.reflected.size(), 0,
                               mirror.culledObjects,       mirror.culledVertices,    mirror.belowBudgetObjects,
-                              mirror.belowBudgetVertices, 0, mirror.cost};
+                              mirror.belowBudgetVertices, 0, mirror.cost, {}};
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }

@@ -2,10 +2,11 @@
 // One object seen in a mirror part by casting each pixel's reflected ray (from the G-buffer point,
 // as the ray tracer does with one bounce) against the object's mesh through its hierarchy, and
 // keeping the nearest hit, shaded there at the depth of that reflection like a virtual object.
-// Serves two cases: the mirror meeting itself (a bowl's inside reflecting its far wall: it shows its
-// own colour there, and what lies behind it in its own reflection stays hidden), the objects of a
-// part the frame plan ray-casts instead of searching (a mirror covering few pixels), and the pixels
-// of a searched part that no virtual object landed on (drawn as points, uncovered-pixel.vert).
+// Serves three cases: the mirror meeting itself (a bowl's inside reflecting its far wall: it shows
+// its own colour there, and what lies behind it in its own reflection stays hidden), the objects of
+// a part the frame plan ray-casts instead of searching (drawn on the tiles ray-cast-tiles.comp lists
+// for each, ray-cast-tile.vert, or over the whole part), and the pixels of a searched part that no
+// virtual object landed on (drawn as points, uncovered-pixel.vert).
 #include "common/clip-depth.glsl"
 #include "common/shading.glsl"
 #include "common/triangle-bvh.glsl"

@@ -17,8 +17,10 @@ namespace {
 constexpr float kVirtualFarScale = 3.0f;
 constexpr int kCastTile = 8;        // pixels per side of a ray-cast tile (ray-cast-tiles.comp)
 constexpr std::size_t kCastTileGroup = 64;  // tiles per work group (ray-cast-tiles.comp)
-// Tile-list entries of one frame (16 MiB): parts past it cast every object over all their pixels.
+// Tile-list entries and nearest-hit pixels of one frame (16 and 32 MiB): parts past either cast
+// every object over all their pixels.
 constexpr std::size_t kCastTileListBudget = std::size_t{4} << 20;
+constexpr std::size_t kNearestHitBudget = std::size_t{8} << 20;
 }  // namespace
 
 Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl::GlApi& gl) {
@@ -235,7 +237,7 @@ void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
     CastPart& part = castParts_[partIndex];
     if (mirror.seesItself) part.objects.push_back(mirror.mirrorObject);
     for (const ReflectionSlotRange* range : planned.reflected) part.objects.push_back(range->object);
-    // Nearest to the mirror first: their hits then bound the later objects' traversals (nearestHit_).
+    // Nearest to the mirror first: their hits then bound the later objects' traversals (nearestHits_).
     const glm::vec3 mirrorCentre = frame.worldBounds[mirror.mirrorObject].center();
     const auto nearestReach = [&](std::size_t object) {
       const math::Bounds& bounds = frame.worldBounds[object];
@@ -248,11 +250,12 @@ void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
     part.tileExtent = (pixels.high + kCastTile - 1) / kCastTile - part.firstTile;
     part.tileCapacity = static_cast<std::size_t>(part.tileExtent.x) * static_cast<std::size_t>(part.tileExtent.y);
     const std::size_t needed = part.objects.size() * part.tileCapacity;
-    // A part whose lists would pass the budget casts every object over all its pixels instead. So
-    // does a part of one object: on llvmpipe classifying its tiles costs what the tiles it leaves
-    // out would (checker-sphere and quad, whose one object covers a third to half of the mirror).
+    const std::size_t partPixels = static_cast<std::size_t>(pixels.size().x) * static_cast<std::size_t>(pixels.size().y);
+    // A part whose lists or nearest hits would pass their budgets casts every object over all its
+    // pixels instead. So does a part of one object: on llvmpipe classifying its tiles costs what
+    // the tiles it leaves out would (checker-sphere and quad, one object on a third to half of it).
     part.tiled = frame.settings.castTiles && part.objects.size() >= 2 && part.tileCapacity > 0 &&
-                 entries + needed <= kCastTileListBudget;
+                 entries + needed <= kCastTileListBudget && pixelCount + partPixels <= kNearestHitBudget;
     if (!part.tiled) continue;
     part.firstObject = spheres.size();
     part.firstEntry = entries;
@@ -260,7 +263,7 @@ void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
     part.pixelLow = pixels.low;
     part.pixelHigh = pixels.high;
     part.firstHit = pixelCount;
-    pixelCount += static_cast<std::size_t>(pixels.size().x) * static_cast<std::size_t>(pixels.size().y);
+    pixelCount += partPixels;
     for (const std::size_t object : part.objects) {
       const math::Bounds& bounds = frame.worldBounds[object];
       spheres.emplace_back(bounds.center(), 0.5f * glm::length(bounds.high - bounds.low));

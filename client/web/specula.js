@@ -220,17 +220,18 @@
     const threshold = Number($('threshold').value);
     if (!(threshold > 0)) { showStatus('threshold must be a positive number'); return; }
     send({ settings: {
-      method: $('method').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
+      method: $('method').value, search: $('search').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
       threshold, level: level === 0 ? -1 : level,
       jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value), ...nextInput(),
     } });
   }
-  for (const id of ['method', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
+  for (const id of ['method', 'search', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
     $(id).addEventListener('change', sendSettings);
 
   function showSettings(settings) {
     const set = (id, value) => { if (value !== undefined && value !== null) $(id).value = value; };
     set('method', settings.method);
+    set('search', settings.search);
     set('plan', settings.plan);
     set('tessellation', settings.tessellation);
     set('metric', settings.metric);
@@ -348,7 +349,7 @@
       `input → frame ${state.latencyMs === null ? '–' : `${state.latencyMs.toFixed(0)} ms`}`,
       `server: render ${ms(f.renderMs)} ms · encode ${ms(f.encodeMs)} ms · input→sent ${ms(f.serverMs)} ms`,
       `passes (GPU ms): ${stages}`,
-      `search: ${search.mirrors || 0} mirrors · ${search.searched || 0} vertices · ${Number(search.meanSteps || 0).toFixed(2)} steps (max ${search.maxSteps || 0}) · ${search.unsolved || 0} unsolved`,
+      `search: ${search.mirrors || 0} mirrors · ${search.searched || 0} vertices · ${Number(search.meanSteps || 0).toFixed(2)} steps (max ${search.maxSteps || 0}) · ${search.unsolved || 0} unsolved${search.enlarged || search.inNoCone ? ` · ${search.enlarged || 0} enlarged, ${search.inNoCone || 0} in no cone` : ''}`,
       tessellation.inputTriangles
         ? `tessellation: ${tessellation.inputTriangles} → ${tessellation.finishedTriangles} triangles · ${tessellation.midpointSearches} midpoint searches${tessellation.capped ? ' · CAPPED' : ''}`
         : 'tessellation: off or nothing to split',

@@ -36,10 +36,12 @@ CommandLine benchOptions() {
       {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
+      searchOption(),
   };
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
       "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
+      "[--search crosshair|hierarchy] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
@@ -272,6 +274,9 @@ int runBench(std::span<const std::string> arguments) {
   }
   settings.reference = !options.has("no-reference");
   if (Status status = parsePlanOptions(options, settings.reflection); !status) return fail(status.error());
+  auto search = parseSearchOption(options);
+  if (!search) return fail(search.error());
+  settings.reflection.search = *search;
   std::vector<std::string> builtins;
   for (std::string_view name : scene::builtinSceneNames()) builtins.emplace_back(name);
   const std::vector<std::string> names = sceneList(options, builtins);

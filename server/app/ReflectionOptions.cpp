@@ -49,6 +49,20 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
   return settings;
 }
 
+OptionSpec searchOption() {
+  return {"search", "HOW",
+          "crosshair (Estalella: climb 3x3 windows from last frame's texel) | hierarchy (Szabo: down bounding spheres "
+          "and cones of the mirror's reflected rays)",
+          "crosshair"};
+}
+
+Result<passes::SearchStrategy> parseSearchOption(const CommandLine& options) {
+  const std::string search = options.text("search");
+  if (search == passes::searchStrategyName(passes::SearchStrategy::Crosshair)) return passes::SearchStrategy::Crosshair;
+  if (search == passes::searchStrategyName(passes::SearchStrategy::Hierarchy)) return passes::SearchStrategy::Hierarchy;
+  return Error{"--search expects crosshair or hierarchy, got '" + search + "'"};
+}
+
 std::vector<OptionSpec> planOptions() {
   return {
       {"plan", "SCOPE",
@@ -103,6 +117,7 @@ std::vector<OptionSpec> reflectionOptions() {
       {"gbuffer-scale", "X", scale, "1"},
       {"gbuffer-precision", "BITS", "G-buffer float bits: 32 (RGBA32F) or 16 (RGBA16F)", "32"},
       {"environment-size", "N", faceSize, std::to_string(defaults.environmentMapSize)},
+      searchOption(),
   };
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
@@ -128,6 +143,9 @@ Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& opt
   auto cubeFace = options.integer("environment-size", passes::kMinEnvironmentMapSize, passes::kMaxEnvironmentMapSize);
   if (!cubeFace) return Error{cubeFace.error()};
   settings.environmentMapSize = *cubeFace;
+  auto search = parseSearchOption(options);
+  if (!search) return Error{search.error()};
+  settings.search = *search;
   if (Status status = parsePlanOptions(options, settings); !status) return Error{status.error()};
   auto tessellation = parseTessellationOptions(options);
   if (!tessellation) return Error{tessellation.error()};

@@ -15,13 +15,19 @@ std::vector<OptionSpec> tessellationOptions();
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
 
+// --search: how the search finds each vertex's texel (crosshair or hierarchy).
+OptionSpec searchOption();
+
+// Reads it, or says what it accepts.
+Result<passes::SearchStrategy> parseSearchOption(const CommandLine& options);
+
 // --plan and --ray-cast: what the frame plan leaves out and which mirror parts it ray-casts.
 std::vector<OptionSpec> planOptions();
 
 // Reads them into `settings`, or says which value is wrong and what it accepts.
 Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& settings);
 
-// The tessellation and plan options plus --margin, --gbuffer-scale, --gbuffer-precision and --environment-size.
+// The search, tessellation and plan options plus --margin, --gbuffer-scale, --gbuffer-precision and --environment-size.
 std::vector<OptionSpec> reflectionOptions();
 
 // Reads them all (the method stays the default: each command names its own methods).

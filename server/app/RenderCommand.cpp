@@ -39,7 +39,7 @@ CommandLine renderOptions() {
   specs.push_back(glOption());
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] "
+      "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
@@ -113,14 +113,19 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
   text += " total " + formatMilliseconds(frame.timings.totalMilliseconds) + " ms\n";
   if (!frame.drawnMirrors.empty()) {
     const passes::SearchStatistics& search = frame.search;
-    char line[256];
+    char line[320];
     std::snprintf(line, sizeof line,
-                  "reflections: %zu mirrors, %u vertices searched, steps mean %.2f max %u, %u cold starts, %u hidden, "
-                  "%u unsolved\n",
-                  frame.drawnMirrors.size(), search.searched,
+                  "reflections: %zu mirrors, %u vertices searched (%s), steps mean %.2f max %u, %u cold starts, %u hidden, "
+                  "%u unsolved",
+                  frame.drawnMirrors.size(), search.searched, passes::searchStrategyName(settings.search),
                   search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
                   search.coldStarts, search.hidden, search.unsolved);
     text += line;
+    if (settings.search == passes::SearchStrategy::Hierarchy) {
+      std::snprintf(line, sizeof line, ", %u in no cone until enlarged, %u in none even then", search.enlarged, search.inNoCone);
+      text += line;
+    }
+    text += "\n";
   }
   for (const render::MirrorPlanSummary& mirror : frame.plan) {
     char line[512];

@@ -34,7 +34,9 @@ CommandLine serveOptions() {
       {"still-delay", "MS", "quiet time after input before a full-quality still frame", "150"},
       {"max-size", "WxH", "largest viewport a client may ask for", "3840x2160"},
   };
-  for (OptionSpec& spec : tessellationOptions()) {
+  std::vector<OptionSpec> sessionDefaults = tessellationOptions();
+  sessionDefaults.insert(sessionDefaults.begin(), searchOption());
+  for (OptionSpec& spec : sessionDefaults) {
     spec.help += " (sessions' default)";
     specs.push_back(std::move(spec));
   }
@@ -71,12 +73,13 @@ int runServe(std::span<const std::string> arguments) {
   auto maxFps = options.number("max-fps");
   auto maxSize = options.size("max-size", 16384);
   auto tessellation = parseTessellationOptions(options);
+  auto search = parseSearchOption(options);
   for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
                                renderThreads ? Status{} : Error{renderThreads.error()},
                                encodeThreads ? Status{} : Error{encodeThreads.error()},
                                stillDelay ? Status{} : Error{stillDelay.error()}, maxFps ? Status{} : Error{maxFps.error()},
                                maxSize ? Status{} : Error{maxSize.error()},
-                               tessellation ? Status{} : Error{tessellation.error()}})
+                               tessellation ? Status{} : Error{tessellation.error()}, search ? Status{} : Error{search.error()}})
     if (!status) return fail(status.error());
   if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
@@ -111,6 +114,7 @@ int runServe(std::span<const std::string> arguments) {
   config.hub.stillDelay = std::chrono::milliseconds(*stillDelay);
   config.hub.maxFps = *maxFps;
   config.hub.defaults.reflection.tessellation = *tessellation;
+  config.hub.defaults.reflection.search = *search;
   config.hub.scheduler = {*renderThreads, *encodeThreads};
   config.server = serverOptions;
   auto service = Service::start(std::move(config));

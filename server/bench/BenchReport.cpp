@@ -75,6 +75,14 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"uncovered_ray_cast_px", std::to_string(r.uncoveredRayCast)});
   f.push_back({"cast_object_tiles", std::to_string(r.castTiles.listed)});
   f.push_back({"cast_object_tiles_possible", std::to_string(r.castTiles.possible)});
+  for (const passes::SearchStrategy strategy : {passes::SearchStrategy::Crosshair, passes::SearchStrategy::Hierarchy}) {
+    const std::string name = passes::searchStrategyName(strategy);
+    const auto measured = std::find_if(r.searches.begin(), r.searches.end(), [&](const auto& s) { return s.strategy == strategy; });
+    const bool has = measured != r.searches.end();
+    f.push_back({name + "_search_ms", has ? number(measured->milliseconds, 3) : ""});
+    f.push_back({name + "_steps_mean", has ? number(measured->steps.mean, 2) : ""});
+    f.push_back({name + "_steps_max", has ? std::to_string(measured->steps.maximum) : ""});
+  }
   const auto& e = r.pointError;
   f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
   f.push_back({"point_error_mean_px", e ? significant(e->mean) : ""});
@@ -349,6 +357,17 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
              std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
              " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
              std::to_string(r.castTiles.possible) + " object tiles\n";
+    if (r.searches.empty()) continue;
+    std::string searches = "  searches (first frames, warm):";
+    for (const SceneBenchResult::SearchComparison& s : r.searches) {
+      searches += std::string(" ") + passes::searchStrategyName(s.strategy) + " " + number(s.milliseconds, 2) + " ms, " +
+                  number(s.steps.mean, 1) + " steps (max " + std::to_string(s.steps.maximum) + ")";
+      if (s.strategy == passes::SearchStrategy::Hierarchy)
+        searches += ", " + std::to_string(s.enlarged) + " enlarged, " + std::to_string(s.inNoCone) + " in no cone";
+      searches += ";";
+    }
+    searches.back() = '\n';
+    table += searches;
   }
   return table;
 }

@@ -62,6 +62,41 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
   return SceneBenchResult::ReferenceComparison{comparison->psnr, comparison->ssim, comparison->mirrorMismatch, truth->milliseconds};
 }
 
+// Frames each search strategy is timed on, after the cold one.
+constexpr int kSearchComparisonFrames = 10;
+
+// Both search strategies along the scene's first frames (coherence from the first, cold, one).
+Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::Renderer& renderer, const BenchOptions& options) {
+  std::vector<SceneBenchResult::SearchComparison> comparisons;
+  for (passes::SearchStrategy strategy : {passes::SearchStrategy::Crosshair, passes::SearchStrategy::Hierarchy}) {
+    passes::ReflectionSettings settings = options.reflection;
+    settings.search = strategy;
+    renderer.resetCoherence();
+    SceneBenchResult::SearchComparison comparison{strategy, 0.0, {}, 0, 0};
+    StepAccumulator steps;
+    std::vector<double> milliseconds;
+    for (int frame = 0; frame <= kSearchComparisonFrames; ++frame) {
+      auto rendered = renderer.render(scene::ScenePose::at(renderer.scene(), frame / options.framesPerSecond), options.width,
+                                      options.height, settings);
+      if (!rendered) return Error{rendered.error()};
+      if (frame == 0 || rendered->search.searched == 0) continue;
+      steps.add(rendered->search);
+      comparison.enlarged += rendered->search.enlarged;
+      comparison.inNoCone += rendered->search.inNoCone;
+      double searchStages = 0.0;
+      for (const render::StageTiming& stage : rendered->timings.stages)
+        if (stage.name == "gbuffer-pyramid" || stage.name == "ray-hierarchy" || stage.name == "search") searchStages += stage.milliseconds;
+      milliseconds.push_back(searchStages);
+    }
+    if (milliseconds.empty()) return std::vector<SceneBenchResult::SearchComparison>{};
+    comparison.milliseconds = median(std::move(milliseconds));
+    comparison.steps = steps.result();
+    comparisons.push_back(comparison);
+  }
+  renderer.resetCoherence();
+  return comparisons;
+}
+
 // Median wall time of the pose drawn without reflections, after one frame to settle the targets.
 double rasterFloor(render::Renderer& renderer, const scene::ScenePose& pose, const BenchOptions& options) {
   constexpr int kFloorFrames = 10;
@@ -152,6 +187,9 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   }
 
   result.rasterFloorMilliseconds = rasterFloor(r, pose, options);
+  auto searches = compareSearches(r, options);
+  if (!searches) return Error{searches.error()};
+  result.searches = std::move(*searches);
 
   if (options.reference) {
     auto comparison = compareWithRayTracer(scene, pose, last);

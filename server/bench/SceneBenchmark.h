@@ -54,6 +54,17 @@ struct SceneBenchResult {
   std::size_t uncoveredRayCast = 0;  // last frame: pixels no virtual object covered, ray-cast instead
   passes::CastTileCount castTiles;   // last frame, all ray-cast parts: object tiles cast on, of possible
 
+  // Each search strategy over the first frames of the same animation, the cold first frame left out:
+  // its search stages' time (the pyramid or ray hierarchy, and the search) and its steps (3×3 windows,
+  // or hierarchy nodes). Empty where no part searches.
+  struct SearchComparison {
+    passes::SearchStrategy strategy = passes::SearchStrategy::Crosshair;
+    double milliseconds = 0.0;  // median per frame
+    StepStatistics steps;
+    std::uint64_t enlarged = 0, inNoCone = 0;  // hierarchy: vertices its cones missed, over the frames
+  };
+  std::vector<SearchComparison> searches;
+
   // Reflection-point error in pixels over all frames; absent without an analytic sphere mirror.
   struct PointError {
     std::size_t count = 0;

@@ -34,6 +34,7 @@ namespace specula::gl {
   X(PFNGLFINISHPROC, Finish)                                                                       \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                             \
   X(PFNGLREADPIXELSPROC, ReadPixels)                                                               \
+  X(PFNGLGETTEXIMAGEPROC, GetTexImage)                                                             \
   X(PFNGLGENTEXTURESPROC, GenTextures)                                                             \
   X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                       \
   X(PFNGLBINDTEXTUREPROC, BindTexture)                                                             \

@@ -221,10 +221,11 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     return plan;
   }
   plan.passes.push_back("mirror-gbuffer");
-  // Searching (and so its pyramid and tessellation) only for parts drawn as virtual objects.
+  // Searching (and so its pyramid or ray hierarchy, and tessellation) only for parts drawn as virtual objects.
   plan.search = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
                             [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
-  if (plan.search) plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"});
+  if (plan.search)
+    plan.passes.insert(plan.passes.end(), {settings.search == SearchStrategy::Hierarchy ? "ray-hierarchy" : "gbuffer-pyramid", "search"});
   plan.tessellate = plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back("tessellation");
   plan.passes.push_back("virtual-objects");

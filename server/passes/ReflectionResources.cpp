@@ -103,7 +103,34 @@ Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 
   gl_->BindTexture(GL_TEXTURE_2D, 0);
   // Every layer starts empty: mark it all covered so the first frame clears it.
   std::fill(covered_.begin(), covered_.end(), TexelRect{{0, 0}, size});
+  rayHierarchySpheres_.reset();
+  rayHierarchyCones_.reset();
   return {};
+}
+
+void ReflectionResources::prepareRayHierarchy() {
+  if (rayHierarchySpheres_) return;
+  const GLsizei layers = static_cast<GLsizei>(std::max<std::size_t>(slots_.mirrors.size(), 1));
+  rayHierarchyTop_ = 0;
+  while (std::max(levelSize(rayHierarchyTop_).x, levelSize(rayHierarchyTop_).y) > 1) ++rayHierarchyTop_;
+  rayHierarchySpheres_.emplace(*gl_);
+  rayHierarchyCones_.emplace(*gl_);
+  for (const gl::GlTexture* texture : {&*rayHierarchySpheres_, &*rayHierarchyCones_}) {
+    gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
+    gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, rayHierarchyTop_ + 1, GL_RGBA32F, size_.x, size_.y, layers);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  gl_->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  // Undefined texels: the first build covers every leaf (the G-buffer is clear off its mirrors).
+  rayHierarchyCovered_.assign(std::max<std::size_t>(slots_.mirrors.size(), 1), TexelRect{{0, 0}, size_});
+}
+
+TexelRect ReflectionResources::takeRayHierarchyRebuild(int layer) {
+  TexelRect& built = rayHierarchyCovered_[static_cast<std::size_t>(layer)];
+  const TexelRect rebuild = built.united(covered_[static_cast<std::size_t>(layer)]);
+  built = covered_[static_cast<std::size_t>(layer)];
+  return rebuild;
 }
 
 glm::vec4 ReflectionResources::coveredFramePixels(int layer) const {
@@ -159,6 +186,22 @@ std::vector<ReflectedVertex> ReflectionResources::readReflectedVertices() const 
   gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(result.size() * sizeof(ReflectedVertex)),
                         result.data());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return result;
+}
+
+ReflectionResources::RayHierarchyLevel ReflectionResources::readRayHierarchyLevel(int level) const {
+  RayHierarchyLevel result;
+  if (!rayHierarchySpheres_ || level < 0 || level > rayHierarchyTop_) return result;
+  result.size = levelSize(level);
+  const std::size_t texels = static_cast<std::size_t>(result.size.x) * static_cast<std::size_t>(result.size.y) *
+                             std::max<std::size_t>(slots_.mirrors.size(), 1);
+  gl_->MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  for (auto [texture, out] : {std::pair{&*rayHierarchySpheres_, &result.spheres}, std::pair{&*rayHierarchyCones_, &result.cones}}) {
+    out->resize(texels);
+    gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
+    gl_->GetTexImage(GL_TEXTURE_2D_ARRAY, level, GL_RGBA, GL_FLOAT, out->data());
+  }
+  gl_->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
   return result;
 }
 

@@ -66,6 +66,15 @@ class ReflectionResources {
   // The hierarchy of a mesh (a mirror's own where it sees itself, an object's in a ray-cast part),
   // built on first use and kept (meshes do not change; objects move rigidly).
   const MeshBvh& meshBvh(std::uint32_t mesh);
+  // The ray hierarchy (shaders/common/ray-hierarchy.glsl) at the G-buffer's size, one layer per
+  // mirror part, levels down to one texel: allocated by the first call after the G-buffer is sized.
+  void prepareRayHierarchy();
+  GLuint rayHierarchySpheres() const { return rayHierarchySpheres_->id(); }
+  GLuint rayHierarchyCones() const { return rayHierarchyCones_->id(); }
+  int rayHierarchyTopLevel() const { return rayHierarchyTop_; }
+  // The leaves a layer's hierarchy must rebuild this frame (its cones follow the eye): this frame's
+  // cover and the one it was last built for, which then becomes this frame's.
+  TexelRect takeRayHierarchyRebuild(int layer);
   TessellationBuffers& tessellation() { return tessellation_; }
   const TessellationBuffers& tessellation() const { return tessellation_; }
 
@@ -84,6 +93,13 @@ class ReflectionResources {
   void resetStatistics();
   SearchStatistics readStatistics() const;
   std::vector<ReflectedVertex> readReflectedVertices() const;
+  // One level of the last frame's ray hierarchy, every layer: spheres then cones, RGBA per texel
+  // (a GPU readback; empty when no frame has built it).
+  struct RayHierarchyLevel {
+    glm::ivec2 size{0};
+    std::vector<glm::vec4> spheres, cones;  // [layer][y][x]
+  };
+  RayHierarchyLevel readRayHierarchyLevel(int level) const;
 
  private:
   const gl::GlApi* gl_;
@@ -93,6 +109,9 @@ class ReflectionResources {
   GBufferPrecision precision_ = GBufferPrecision::Float32;
   int coarseLevel_ = 0;
   gl::GlTexture position_, normal_, depth_;
+  std::optional<gl::GlTexture> rayHierarchySpheres_, rayHierarchyCones_;  // empty until a search uses them
+  int rayHierarchyTop_ = 0;
+  std::vector<TexelRect> rayHierarchyCovered_;
   gl::GlFramebuffer framebuffer_;
   gl::GlBuffer reflected_, statistics_;
   std::map<std::size_t, gl::GlBuffer> triangleParts_;

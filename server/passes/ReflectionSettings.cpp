@@ -4,6 +4,10 @@
 
 namespace specula::passes {
 
+const char* searchStrategyName(SearchStrategy strategy) {
+  return strategy == SearchStrategy::Hierarchy ? "hierarchy" : "crosshair";
+}
+
 std::string describeTessellation(const TessellationSettings& settings) {
   if (settings.mode == TessellationMode::None || settings.maxLevel == 0) return "none";
   char text[96];

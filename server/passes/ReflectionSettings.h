@@ -12,6 +12,20 @@ enum class ReflectionMethod {
   EnvironmentMap,
 };
 
+// How the search finds the G-buffer texel nearest each vertex's reflection point, which it then
+// refines below the texel.
+enum class SearchStrategy {
+  // Estalella et al. 2006: hill-climb N·B in 3×3 windows from last frame's texel (coherence); cold
+  // starts scan a coarse level of the averaged G-buffer pyramid and climb down.
+  Crosshair,
+  // Szabo 2013, ch. 4: top-down through a pyramid of bounding spheres of the mirror's positions and
+  // cones of its reflected eye rays, into the cones that hold the vertex. No coherence.
+  Hierarchy,
+};
+
+// "crosshair" or "hierarchy": how reports and the command line name a strategy.
+const char* searchStrategyName(SearchStrategy strategy);
+
 // Storage of the mirror G-buffer's world positions and normals.
 enum class GBufferPrecision {
   Float32,  // RGBA32F
@@ -71,6 +85,7 @@ struct ReflectionSettings {
   float gbufferScale = 1.0f;
   GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;
   int environmentMapSize = 256;  // cube face side in texels (EnvironmentMap), in [kMin, kMaxEnvironmentMapSize]
+  SearchStrategy search = SearchStrategy::Crosshair;
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb

@@ -27,7 +27,18 @@ void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& fra
   gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.positionTexture());
   gl.ActiveTexture(GL_TEXTURE1);
   gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.normalTexture());
+  const bool hierarchy = frame.settings.search == SearchStrategy::Hierarchy;
+  if (hierarchy) {
+    gl.ActiveTexture(GL_TEXTURE2);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.rayHierarchySpheres());
+    gl.ActiveTexture(GL_TEXTURE3);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.rayHierarchyCones());
+    program.set("rayHierarchySpheres", 2);
+    program.set("rayHierarchyCones", 3);
+    program.set("rayHierarchyTop", frame.reflections.rayHierarchyTopLevel());
+  }
   gl.ActiveTexture(GL_TEXTURE0);
+  program.set("rayHierarchy", hierarchy ? 1 : 0);
   program.set("gbufferPosition", 0);
   program.set("gbufferNormal", 1);
   program.set("eyePosition", frame.pose.camera.eye);

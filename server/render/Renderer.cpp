@@ -13,6 +13,7 @@
 #include "passes/FramePlan.h"
 #include "passes/GBufferPyramidPass.h"
 #include "passes/MirrorGBufferPass.h"
+#include "passes/RayHierarchyPass.h"
 #include "passes/ScenePass.h"
 #include "passes/SearchPass.h"
 #include "passes/TessellationPass.h"
@@ -77,6 +78,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::
   for (Status status : {addPass(renderer->passes_, passes::ScenePass::create(gl)),
                         addPass(renderer->passes_, passes::MirrorGBufferPass::create(gl)),
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
+                        addPass(renderer->passes_, passes::RayHierarchyPass::create(gl)),
                         addPass(renderer->passes_, passes::SearchPass::create(gl)),
                         addPass(renderer->passes_, passes::TessellationPass::create(gl)),
                         addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl), &renderer->virtualObjects_),

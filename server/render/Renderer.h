@@ -82,6 +82,11 @@ class Renderer {
   }
   // The last frame's search results, one per slot of reflectionSlots() (a GPU readback).
   std::vector<passes::ReflectedVertex> readReflectedVertices() const { return reflections_.readReflectedVertices(); }
+  // One level of the last frame's ray hierarchy (a GPU readback; --search hierarchy only).
+  passes::ReflectionResources::RayHierarchyLevel readRayHierarchyLevel(int level) const {
+    return reflections_.readRayHierarchyLevel(level);
+  }
+  int rayHierarchyTopLevel() const { return reflections_.rayHierarchyTopLevel(); }
   // The last frame's tessellated vertices (midpoints included), when it was tessellated.
   std::vector<passes::FinishedVertex> readTessellatedVertices() const { return reflections_.tessellation().readFinished(); }
   const passes::ReflectionSlots& reflectionSlots() const { return slots_; }

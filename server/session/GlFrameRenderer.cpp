@@ -47,6 +47,8 @@ Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
   out.search.set_cold_starts(search.coldStarts);
   out.search.set_hidden(search.hidden);
   out.search.set_unsolved(search.unsolved);
+  out.search.set_enlarged(search.enlarged);
+  out.search.set_in_no_cone(search.inNoCone);
   const passes::TessellationStatistics& tessellation = frame->tessellation;
   out.tessellation.set_input_triangles(tessellation.inputTriangles);
   out.tessellation.set_finished_triangles(tessellation.finishedTriangles);

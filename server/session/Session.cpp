@@ -47,6 +47,7 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
   out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
   out.set_plan(settings.reflection.plan == passes::PlanScope::Everything ? v1::PLAN_EVERYTHING : v1::PLAN_NEEDED);
+  out.set_search(settings.reflection.search == passes::SearchStrategy::Hierarchy ? v1::SEARCH_HIERARCHY : v1::SEARCH_CROSSHAIR);
   return out;
 }
 
@@ -316,6 +317,12 @@ Status Session::applySettings(const v1::RenderSettings& update) {
     case v1::PLAN_EVERYTHING: settings.reflection.plan = passes::PlanScope::Everything; break;
     case v1::PLAN_UNSPECIFIED: break;
     default: return Error{"settings: unknown plan scope"};
+  }
+  switch (update.search()) {
+    case v1::SEARCH_CROSSHAIR: settings.reflection.search = passes::SearchStrategy::Crosshair; break;
+    case v1::SEARCH_HIERARCHY: settings.reflection.search = passes::SearchStrategy::Hierarchy; break;
+    case v1::SEARCH_UNSPECIFIED: break;
+    default: return Error{"settings: unknown search strategy"};
   }
   switch (update.metric()) {
     case v1::METRIC_PIXELS: t.metric = passes::TessellationMetric::Pixels; break;

@@ -4,6 +4,8 @@
 const int kReflectionHidden = 1;    // region C: reflected by the inverse rule, still drawn
 const int kReflectionUnsolved = 2;  // no mirror texel found: its triangles are dropped
 const int kReflectionColdStart = 4; // searched from the pyramid, not from last frame's texel
+const int kReflectionEnlarged = 8;  // ray hierarchy: in no cone until Szabo's enlargement
+const int kReflectionInNoCone = 16; // ray hierarchy: in no cone even enlarged (hidden or unreflected)
 
 struct ReflectedVertex {
   vec4 virtualPosition;   // world space; w = 1 when solved

@@ -176,12 +176,13 @@ std::vector<HardCase> hardCases() {
   };
 }
 
-class HardCases : public ::testing::TestWithParam<std::tuple<HardCase, Surface>> {};
+class HardCases : public ::testing::TestWithParam<std::tuple<HardCase, Surface, passes::SearchStrategy>> {};
 
 // With and without tessellation, each from cold seeds: the second run must not inherit the first's.
-// Tessellation's own vertices (edge midpoints) are measured too, not only the mesh's.
+// Tessellation's own vertices (edge midpoints) are measured too, not only the mesh's. Both searches
+// are held to the same bounds.
 TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
-  const auto& [hard, surface] = GetParam();
+  const auto& [hard, surface, search] = GetParam();
   const double bound = surface == Surface::Exact ? hard.maxErrorPixels : hard.meshMaxErrorPixels;
   auto gl = context();
   ASSERT_TRUE(gl);
@@ -195,6 +196,7 @@ TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
   for (auto mode : {passes::TessellationMode::None, passes::TessellationMode::CrackFree}) {
     passes::ReflectionSettings settings;
     settings.tessellation.mode = mode;
+    settings.search = search;
     (*renderer)->resetCoherence();
     const Outcome outcome = renderAndMeasure(**renderer, camera, 320, 240, settings);
     EXPECT_GT(outcome.slots, 0u);
@@ -203,8 +205,8 @@ TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
     if (hard.expectMeasured) {
       EXPECT_FALSE(outcome.errors.pixels.empty()) << "no visible reflection to compare";
     }
-    std::printf("%s%s, %s: p99 %.3g px, max %.3g px over %zu vertices; tessellated: max %.3g px over %zu\n", hard.name,
-                surface == Surface::Mesh ? " on the mesh" : "", mode == passes::TessellationMode::None ? "untessellated" : "tessellated",
+    std::printf("%s%s, %s search, %s: p99 %.3g px, max %.3g px over %zu vertices; tessellated: max %.3g px over %zu\n", hard.name,
+                surface == Surface::Mesh ? " on the mesh" : "", passes::searchStrategyName(search), mode == passes::TessellationMode::None ? "untessellated" : "tessellated",
                 outcome.errors.percentile(0.99), outcome.errors.percentile(1.0), outcome.errors.pixels.size(),
                 outcome.tessellated.percentile(1.0), outcome.tessellated.pixels.size());
     for (const auto* errors : {&outcome.errors, &outcome.tessellated}) {
@@ -223,9 +225,12 @@ TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Sphere, HardCases, ::testing::Combine(::testing::ValuesIn(hardCases()), ::testing::Values(Surface::Exact, Surface::Mesh)),
+INSTANTIATE_TEST_SUITE_P(Sphere, HardCases,
+                         ::testing::Combine(::testing::ValuesIn(hardCases()), ::testing::Values(Surface::Exact, Surface::Mesh),
+                                            ::testing::ValuesIn(kSearchStrategies)),
                          [](const auto& test) {
-                           return std::string(std::get<0>(test.param).name) + (std::get<1>(test.param) == Surface::Exact ? "" : "_on_the_mesh");
+                           return std::string(std::get<0>(test.param).name) + (std::get<1>(test.param) == Surface::Exact ? "" : "_on_the_mesh") +
+                                  "_" + searchName(std::get<2>(test.param));
                          });
 
 TEST(HardCasesGeometry, DegenerateSliverAndDuplicatedTrianglesStayFinite) {
@@ -375,7 +380,8 @@ struct RandomizedResult {
   double quantile(double p) const { return errors[static_cast<std::size_t>(p * static_cast<double>(errors.size() - 1))]; }
 };
 
-RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexCount, unsigned seed) {
+RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexCount, unsigned seed,
+                                          passes::SearchStrategy search = passes::SearchStrategy::Crosshair) {
   RandomizedResult result;
   auto gl = context();
   EXPECT_TRUE(gl);
@@ -395,6 +401,7 @@ RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexC
   if (!renderer) return result;
   passes::ReflectionSettings settings;
   settings.tessellation.mode = passes::TessellationMode::None;
+  settings.search = search;
   for (int e = 0; e < eyes; ++e) {
     const float distance = logUniform(1.05f, 1000.0f);
     // A field of view that shows the sphere at 20-90 % of the frame height, aimed a little off centre.
@@ -411,9 +418,9 @@ RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexC
     result.errors.insert(result.errors.end(), outcome.errors.pixels.begin(), outcome.errors.pixels.end());
   }
   std::sort(result.errors.begin(), result.errors.end());
-  std::printf("randomized %s: %zu configurations, %zu measured, error p50 %.2g px, p90 %.2g px, p99 %.2g px, max %.2g px, "
+  std::printf("randomized %s, %s search: %zu configurations, %zu measured, error p50 %.2g px, p90 %.2g px, p99 %.2g px, max %.2g px, "
               "%zu misjudged (%zu within 6 degrees of grazing)\n",
-              surface == Surface::Exact ? "exact sphere" : "96x48 mesh sphere", result.configurations, result.measured,
+              surface == Surface::Exact ? "exact sphere" : "96x48 mesh sphere", passes::searchStrategyName(search), result.configurations, result.measured,
               result.quantile(0.5), result.quantile(0.9), result.quantile(0.99), result.errors.back(), result.misjudged,
               result.misjudgedNearSilhouette);
   return result;
@@ -440,6 +447,22 @@ TEST(HardCasesRandomized, TenThousandConfigurationsOnAMeshSphereStayNearTheExact
   ASSERT_GT(result.measured, result.configurations / 20) << "too few visible reflections to judge";
   EXPECT_LE(result.quantile(0.99), 1.0) << "p50 " << result.quantile(0.5);  // measured 0.54 px: the 96×48 facets
   EXPECT_LE(result.misjudged - result.misjudgedNearSilhouette, result.measured / 100) << "hidden/visible disagreements";
+}
+
+// The ray-hierarchy search on fresh random configurations (other seeds), exact sphere and mesh, held
+// to the crosshair search's bounds: 50 eyes × 500 vertices and 50 × 250.
+TEST(HardCasesRandomized, TheHierarchySearchMeetsTheSameBoundsOnRandomConfigurations) {
+  const RandomizedResult exact = randomizedConfigurations(Surface::Exact, 50, 500, 20261204, passes::SearchStrategy::Hierarchy);
+  EXPECT_EQ(exact.nonFinite, 0u) << "NaN or Inf in a reflection result";
+  ASSERT_GT(exact.measured, exact.configurations / 20) << "too few visible reflections to judge";
+  EXPECT_LE(exact.quantile(0.99), 0.01) << "p50 " << exact.quantile(0.5);
+  EXPECT_LE(exact.errors.back(), 0.5);
+  EXPECT_LE(exact.misjudged, exact.measured / 10000 + 1) << "hidden/visible disagreements";
+  const RandomizedResult mesh = randomizedConfigurations(Surface::Mesh, 50, 250, 20261205, passes::SearchStrategy::Hierarchy);
+  EXPECT_EQ(mesh.nonFinite, 0u) << "NaN or Inf in a reflection result";
+  ASSERT_GT(mesh.measured, mesh.configurations / 20) << "too few visible reflections to judge";
+  EXPECT_LE(mesh.quantile(0.99), 1.0) << "p50 " << mesh.quantile(0.5);
+  EXPECT_LE(mesh.misjudged - mesh.misjudgedNearSilhouette, mesh.measured / 100) << "hidden/visible disagreements";
 }
 
 }  // namespace

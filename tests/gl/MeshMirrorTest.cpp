@@ -93,16 +93,19 @@ scene::ScenePose restPose(const scene::Scene& scene) { return scene::ScenePose::
 
 }  // namespace
 
+// The general path under both searches, held to the same bounds.
+class MeshMirrorSearch : public ::testing::TestWithParam<passes::SearchStrategy> {};
+
 // The first measurement: checker-sphere with a 128×64 mesh instead of the declared sphere.
-TEST(MeshMirror, TessellatedSphereMatchesTheRayTracerAndTheExactSphere) {
+TEST_P(MeshMirrorSearch, TessellatedSphereMatchesTheRayTracerAndTheExactSphere) {
   auto mesh = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("mesh-sphere"));
   auto exact = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere"));
   for (double t : {0.0, 4.0, 11.0}) {  // the camera orbits 20° a second
     const scene::ScenePose pose = scene::ScenePose::at(*mesh, t);
-    const Comparison own = compare(mesh, pose);
-    const Comparison sphere = compare(mesh, pose, exact);
-    std::printf("mesh sphere t=%.0f: %.2f %% against its own ray trace, %.2f %% against the exact sphere's\n", t,
-                100.0 * own.mismatch, 100.0 * sphere.mismatch);
+    const Comparison own = compare(mesh, pose, nullptr, specula::testing::withSearch(GetParam()));
+    const Comparison sphere = compare(mesh, pose, exact, specula::testing::withSearch(GetParam()));
+    std::printf("mesh sphere t=%.0f, %s search: %.2f %% against its own ray trace, %.2f %% against the exact sphere's\n", t,
+                passes::searchStrategyName(GetParam()), 100.0 * own.mismatch, 100.0 * sphere.mismatch);
     EXPECT_GT(own.mirrorPixels, 20000u);
     EXPECT_LE(own.mismatch, 0.015) << "t=" << t;      // 47-52 % before the fix
     EXPECT_LE(sphere.mismatch, 0.015) << "t=" << t;   // the bound against the exact sphere
@@ -111,19 +114,19 @@ TEST(MeshMirror, TessellatedSphereMatchesTheRayTracerAndTheExactSphere) {
 
 // The bound for the general case: the 128×64 mesh's reflection points within 0.5 px p99 of
 // the exact sphere solver's, along the scene's orbit.
-TEST(MeshMirror, TessellatedSphereReflectionPointsStayWithinHalfAPixel) {
+TEST_P(MeshMirrorSearch, TessellatedSphereReflectionPointsStayWithinHalfAPixel) {
   auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
   ASSERT_TRUE(context) << context.error();
   auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("mesh-sphere")));
   ASSERT_TRUE(renderer) << renderer.error();
   for (double t : {0.0, 4.0, 11.0}) {
     const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
-    auto frame = (*renderer)->render(pose, kWidth, kHeight, specula::testing::virtualObjects());
+    auto frame = (*renderer)->render(pose, kWidth, kHeight, specula::testing::withSearch(GetParam()));
     ASSERT_TRUE(frame) << frame.error();
     const auto errors = bench::measureReflectionPoints(**renderer, pose, *frame);
     ASSERT_GT(errors.pixels.size(), 100u);
-    std::printf("mesh sphere t=%.0f: reflection points p50 %.3f px, p99 %.3f px, max %.3f px over %zu vertices\n", t,
-                errors.percentile(0.5), errors.percentile(0.99), errors.percentile(1.0), errors.pixels.size());
+    std::printf("mesh sphere t=%.0f, %s search: reflection points p50 %.3f px, p99 %.3f px, max %.3f px over %zu vertices\n", t,
+                passes::searchStrategyName(GetParam()), errors.percentile(0.5), errors.percentile(0.99), errors.percentile(1.0), errors.pixels.size());
     EXPECT_LE(errors.percentile(0.99), 0.5) << "t=" << t;
   }
 }
@@ -169,15 +172,19 @@ TEST(MeshMirror, ConcaveBowlSeenFromInsideShowsItselfWhereItsRaysMeetIt) {
 }
 
 // The kitchen's thin steel bowl, mixed curvature, reflected in itself: 51 % off before the fix.
-TEST(MeshMirror, KitchenBowl) {
+TEST_P(MeshMirrorSearch, KitchenBowl) {
   auto scene = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("kitchen"));
   for (double t : {0.0, 1.0}) {
-    const Comparison result = compare(scene, scene::ScenePose::at(*scene, t));
-    std::printf("kitchen bowl t=%.0f: %.2f %% of %zu mirror pixels\n", t, 100.0 * result.mismatch, result.mirrorPixels);
+    const Comparison result = compare(scene, scene::ScenePose::at(*scene, t), nullptr, specula::testing::withSearch(GetParam()));
+    std::printf("kitchen bowl t=%.0f, %s search: %.2f %% of %zu mirror pixels\n", t, passes::searchStrategyName(GetParam()),
+                100.0 * result.mismatch, result.mirrorPixels);
     EXPECT_GT(result.mirrorPixels, 1000u);
     EXPECT_LE(result.mismatch, 0.05) << "t=" << t;  // measured 3.1 % and 2.4 %; its rim is 2-4 pixels wide
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(MeshMirror, MeshMirrorSearch, ::testing::ValuesIn(specula::testing::kSearchStrategies),
+                         [](const auto& test) { return specula::testing::searchName(test.param); });
 
 // Where a reflected image is squeezed against a silhouette or rim, its virtual triangles can leave
 // pixels uncovered, which then showed the background: the kitchen bowl's rim and foot, the mesh

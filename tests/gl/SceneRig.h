@@ -25,6 +25,18 @@ inline passes::ReflectionSettings virtualObjects(passes::ReflectionSettings sett
   return settings;
 }
 
+// Both reflection-point searches, for tests that hold each to the same bounds.
+inline const std::vector<passes::SearchStrategy> kSearchStrategies{passes::SearchStrategy::Crosshair,
+                                                                   passes::SearchStrategy::Hierarchy};
+
+inline passes::ReflectionSettings withSearch(passes::SearchStrategy search, passes::ReflectionSettings settings = virtualObjects()) {
+  settings.search = search;
+  return settings;
+}
+
+// A gtest parameter name for a search strategy.
+inline std::string searchName(passes::SearchStrategy search) { return passes::searchStrategyName(search); }
+
 struct Rig {
   std::unique_ptr<gl::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;

@@ -50,6 +50,8 @@ CommandLine benchOptions() {
       "the ray-traced reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is\n"
       "the last pose drawn with no reflection (--method none): the scene's own raster, below which no method\n"
       "can go. --plan everything turns the frame planner off (no culling, no ray-cast mirrors) for comparison.\n"
+      "\"searches\" renders the first frames again with each search (crosshair, hierarchy), every mirror part\n"
+      "searched: median ms of the search stages, steps, and the hierarchy's enlarged and in-no-cone vertices.\n"
       "Prints a table and writes the same numbers as CSV and JSON.\n"
       "`specula bench tessellation --help` describes the tessellation sweep, `specula bench accuracy --help`\n"
       "the accuracy-against-time report.",

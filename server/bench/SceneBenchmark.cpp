@@ -71,6 +71,7 @@ Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::
   for (passes::SearchStrategy strategy : {passes::SearchStrategy::Crosshair, passes::SearchStrategy::Hierarchy}) {
     passes::ReflectionSettings settings = options.reflection;
     settings.search = strategy;
+    settings.rayCast = passes::RayCastRule::Never;  // every visible mirror part searched, so both searches are compared
     renderer.resetCoherence();
     SceneBenchResult::SearchComparison comparison{strategy, 0.0, {}, 0, 0};
     StepAccumulator steps;

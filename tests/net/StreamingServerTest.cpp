@@ -48,6 +48,7 @@ TEST_P(StreamingServer, HandshakeWelcomesAndSendsAFirstStillFrame) {
   EXPECT_TRUE(welcome.playing()) << "an animated scene starts playing";
   EXPECT_EQ(welcome.settings().tessellation(), v1::TESSELLATION_CRACK_FREE);
   EXPECT_EQ(welcome.settings().plan(), v1::PLAN_NEEDED);
+  EXPECT_EQ(welcome.settings().search(), v1::SEARCH_CROSSHAIR) << "the default search";
   auto frame = receiveUntil(*client, isFrame);
   ASSERT_TRUE(frame);
   EXPECT_EQ(frame->frame().width(), 80u);
@@ -147,6 +148,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_level(2);
     settings.mutable_settings()->set_jpeg_quality(70);
     settings.mutable_settings()->set_plan(v1::PLAN_EVERYTHING);
+    settings.mutable_settings()->set_search(v1::SEARCH_HIERARCHY);
     settings.mutable_settings()->set_error_budget_px(-1.0f);  // 0: only exact decisions
     ASSERT_TRUE(client->send(settings).ok());
     ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
@@ -164,6 +166,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().level(), 2);
   EXPECT_EQ(welcome.settings().jpeg_quality(), 70u);
   EXPECT_EQ(welcome.settings().plan(), v1::PLAN_EVERYTHING);
+  EXPECT_EQ(welcome.settings().search(), v1::SEARCH_HIERARCHY);
   EXPECT_EQ(welcome.settings().error_budget_px(), -1.0f);
   EXPECT_NE(welcome.resume_token(), token) << "a token resumes once";
 

@@ -126,15 +126,10 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
     gl.Enable(GL_BLEND);
     gl.BlendFunc(GL_ONE, GL_ONE);
     lookup_.use();
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.positionTexture());
-    gl.ActiveTexture(GL_TEXTURE1);
-    gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.normalTexture());
     gl.ActiveTexture(GL_TEXTURE2);
     gl.BindTexture(GL_TEXTURE_CUBE_MAP, cube_.id());
-    gl.ActiveTexture(GL_TEXTURE0);
-    lookup_.set("gbufferPosition", 0);
-    lookup_.set("gbufferNormal", 1);
+    bindGBufferTextures(gl, resources);
+    setGBufferSamplers(lookup_);
     lookup_.set("environment", 2);
     lookup_.set("layer", mirror->layer);
     setGBufferPixelMapping(lookup_, resources);

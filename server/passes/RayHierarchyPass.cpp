@@ -25,20 +25,16 @@ void RayHierarchyPass::execute(const FrameContext& frame) {
   resources.prepareRayHierarchy();
   const GLuint spheres = resources.rayHierarchySpheres(), cones = resources.rayHierarchyCones();
   gl.MemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  bindGBufferTextures(gl, resources);
+  leaves_.use();
+  setGBufferSamplers(leaves_);
+  leaves_.set("eyePosition", frame.pose.camera.eye);
   for (const PlannedMirror& planned : frame.plan.mirrors) {
     if (planned.method != PartMethod::VirtualObjects) continue;
     const int layer = planned.slots->layer;
     const TexelRect rebuild = resources.takeRayHierarchyRebuild(layer);
     if (rebuild.empty()) continue;
     leaves_.use();
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.positionTexture());
-    gl.ActiveTexture(GL_TEXTURE1);
-    gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.normalTexture());
-    gl.ActiveTexture(GL_TEXTURE0);
-    leaves_.set("gbufferPosition", 0);
-    leaves_.set("gbufferNormal", 1);
-    leaves_.set("eyePosition", frame.pose.camera.eye);
     leaves_.set("layer", layer);
     leaves_.set("origin", rebuild.low);
     leaves_.set("extent", rebuild.high - rebuild.low);

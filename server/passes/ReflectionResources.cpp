@@ -205,6 +205,18 @@ ReflectionResources::RayHierarchyLevel ReflectionResources::readRayHierarchyLeve
   return result;
 }
 
+void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resources) {
+  gl.ActiveTexture(GL_TEXTURE1);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.normalTexture());
+  gl.ActiveTexture(GL_TEXTURE0);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.positionTexture());
+}
+
+void setGBufferSamplers(const gl::ShaderProgram& program) {
+  program.set("gbufferPosition", 0);
+  program.set("gbufferNormal", 1);
+}
+
 void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources) {
   program.set("marginPixels", glm::vec2(resources.margin()));
   program.set("texelsPerPixel", resources.texelsPerPixel());

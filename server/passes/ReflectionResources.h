@@ -123,4 +123,9 @@ class ReflectionResources {
 // Sets the uniforms of shaders/common/gbuffer-texel.glsl: where a frame pixel lies in the G-buffer.
 void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources);
 
+// Binds the G-buffer's position and normal textures to texture units 0 and 1, leaving unit 0 active.
+void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resources);
+// Points the program's (in use) gbufferPosition and gbufferNormal samplers at those units.
+void setGBufferSamplers(const gl::ShaderProgram& program);
+
 }  // namespace specula::passes

@@ -23,10 +23,7 @@ Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
 
 void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
-  gl.ActiveTexture(GL_TEXTURE0);
-  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.positionTexture());
-  gl.ActiveTexture(GL_TEXTURE1);
-  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.normalTexture());
+  bindGBufferTextures(gl, frame.reflections);
   const bool hierarchy = frame.settings.search == SearchStrategy::Hierarchy;
   if (hierarchy) {
     gl.ActiveTexture(GL_TEXTURE2);
@@ -39,8 +36,7 @@ void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& fra
   }
   gl.ActiveTexture(GL_TEXTURE0);
   program.set("rayHierarchy", hierarchy ? 1 : 0);
-  program.set("gbufferPosition", 0);
-  program.set("gbufferNormal", 1);
+  setGBufferSamplers(program);
   program.set("eyePosition", frame.pose.camera.eye);
   program.set("maxWalkSteps", frame.settings.maxWalkSteps);
 }

@@ -171,8 +171,7 @@ void VirtualObjectsPass::useReadingReflection(const gl::ShaderProgram& program, 
   gl.BindTexture(GL_TEXTURE_2D, reflection_.id());
   gl.ActiveTexture(GL_TEXTURE0);
   program.set("reflection", 2);
-  program.set("gbufferPosition", 0);  // the G-buffer textures are bound by execute()
-  program.set("gbufferNormal", 1);
+  setGBufferSamplers(program);  // the G-buffer textures are bound by execute()
   setGBufferPixelMapping(program, frame.reflections);
   program.set("eyePosition", frame.pose.camera.eye);
   program.set("errorBudget", frame.settings.errorBudgetPixels);
@@ -185,9 +184,8 @@ void VirtualObjectsPass::rayCast(const FrameContext& frame, const MirrorSlots& m
 
 void VirtualObjectsPass::setCastRay(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror) {
   ReflectionResources& resources = frame.reflections;
-  program.use();  // the G-buffer textures are bound by execute()
-  program.set("gbufferPosition", 0);
-  program.set("gbufferNormal", 1);
+  program.use();
+  setGBufferSamplers(program);  // the G-buffer textures are bound by execute()
   setGBufferPixelMapping(program, resources);
   program.set("layer", mirror.layer);
   program.set("eyePosition", frame.pose.camera.eye);
@@ -382,16 +380,12 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.Disable(GL_CULL_FACE);  // reflection flips winding; open meshes are two-sided anyway
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
-  gl.ActiveTexture(GL_TEXTURE1);
-  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.normalTexture());
-  gl.ActiveTexture(GL_TEXTURE0);
-  gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.positionTexture());
+  bindGBufferTextures(gl, frame.reflections);
   classifyCastTiles(frame);
   for (const gl::ShaderProgram* objects : {&objects_, &tessellated_}) {
     objects->use();
     objects->set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-    objects->set("gbufferPosition", 0);
-    objects->set("gbufferNormal", 1);
+    setGBufferSamplers(*objects);
     objects->set("eyePosition", frame.pose.camera.eye);
     objects->set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
     setGBufferPixelMapping(*objects, frame.reflections);

@@ -34,6 +34,7 @@ fails_with "a bad metric lists the metrics" "--metric expects pixels or angle" r
 fails_with "a negative threshold is refused" "--threshold expects a number >= 0" render --threshold -1
 fails_with "a level past the bound is refused" "--level expects an integer in [0, 8]" render --level 9
 fails_with "an unknown method lists the methods" "--method expects search, environment-map, raytrace or none" render --method cubemap
+fails_with "an unknown search lists the searches" "--search expects crosshair or hierarchy, got 'walk'" render --search walk
 fails_with "a G-buffer scale past the bound is refused" "--gbuffer-scale expects texels per pixel from 0.125 to 4, got '8'" render --gbuffer-scale 8
 fails_with "a non-numeric G-buffer scale is refused" "--gbuffer-scale expects texels per pixel" render --gbuffer-scale fine
 fails_with "a G-buffer precision other than 32 or 16 is refused" "--gbuffer-precision expects 32 or 16" render --gbuffer-precision 8

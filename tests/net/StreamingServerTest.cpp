@@ -262,6 +262,7 @@ TEST(StreamingServerInput, OutOfRangeValuesAreRefusedWithAnErrorAndTheSessionGoe
       R"({"resize":{"width":100000,"height":10}})",
       R"({"settings":{"level":99}})",
       R"({"settings":{"plan":7}})",
+      R"({"settings":{"search":9}})",
       R"({"settings":{"errorBudgetPx":99}})",
       R"({"settings":{"errorBudgetPx":-0.5}})",
       R"({"settings":{"resolutionScale":"Infinity"}})",

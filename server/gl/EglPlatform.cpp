@@ -114,6 +114,7 @@ class EglPlatform final : public GlPlatform {
       return Error{"no EGL config supports desktop OpenGL"};
     const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, kGlMajor, EGL_CONTEXT_MINOR_VERSION, kGlMinor,
                                         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                        EGL_CONTEXT_OPENGL_DEBUG, glDebugOutputRequested() ? EGL_TRUE : EGL_FALSE,
                                         EGL_NONE};
     context_ = egl_.CreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
     if (context_ == EGL_NO_CONTEXT)

@@ -1,6 +1,9 @@
 #include "gl/GlContext.h"
 
 #include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace specula::gl {
 
@@ -25,7 +28,26 @@ std::string glString(const GlApi& gl, GLenum name) {
   return text ? reinterpret_cast<const char*>(text) : "";
 }
 
+// Prints each driver message once per (source, type, id), then stays quiet: a per-draw warning
+// would otherwise flood the log every frame.
+void APIENTRY printDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
+                                  const void*) {
+  static constexpr std::size_t kRemembered = 256;
+  static std::array<std::array<GLuint, 3>, kRemembered> seen{};
+  static std::size_t seenCount = 0;
+  const std::array<GLuint, 3> key{source, type, id};
+  for (std::size_t i = 0; i < seenCount; ++i)
+    if (seen[i] == key) return;
+  if (seenCount < kRemembered) seen[seenCount++] = key;
+  std::fprintf(stderr, "GL debug (source 0x%X, type 0x%X, id %u, severity 0x%X): %s\n", source, type, id, severity, message);
+}
+
 }  // namespace
+
+bool glDebugOutputRequested() {
+  const char* value = std::getenv("SPECULA_GL_DEBUG");
+  return value && std::strcmp(value, "") != 0 && std::strcmp(value, "0") != 0;
+}
 
 std::string_view platformName(PlatformKind kind) {
   switch (kind) {
@@ -77,6 +99,18 @@ Status GlContext::initialize() {
   api_.GetIntegerv(GL_MAJOR_VERSION, &major);
   api_.GetIntegerv(GL_MINOR_VERSION, &minor);
   if (major * 10 + minor < 43) return Error{"GL " + info_.version + " is older than the 4.3 core profile needed"};
+  if (glDebugOutputRequested()) {
+    const auto callback = reinterpret_cast<PFNGLDEBUGMESSAGECALLBACKPROC>(platform_->procAddress("glDebugMessageCallback"));
+    if (!callback) return Error{"SPECULA_GL_DEBUG is set but the driver lacks glDebugMessageCallback"};
+    api_.Enable(GL_DEBUG_OUTPUT);
+    api_.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // messages arrive on the calling thread, next to their call
+    callback(printDebugMessage, nullptr);
+    GLint flags = 0;
+    api_.GetIntegerv(GL_CONTEXT_FLAGS, &flags);
+    std::fprintf(stderr, "GL debug output on (SPECULA_GL_DEBUG)%s\n",
+                 (flags & GL_CONTEXT_FLAG_DEBUG_BIT) ? ""
+                                                     : ", but the platform gave no debug context: the driver may stay silent");
+  }
   return {};
 }
 

@@ -25,6 +25,10 @@ class GlPlatform {
   virtual Status makeCurrent() = 0;
 };
 
+// SPECULA_GL_DEBUG=1 asks for a debug context whose driver messages (errors, performance warnings
+// such as shader recompiles or stalls) are printed to stderr: how to see what a driver does slowly.
+bool glDebugOutputRequested();
+
 // Each creates a GL ≥ 4.3 core context or says why not (naming the library or extension missing).
 Result<std::unique_ptr<GlPlatform>> createEglDevicePlatform();
 Result<std::unique_ptr<GlPlatform>> createEglSurfacelessPlatform();

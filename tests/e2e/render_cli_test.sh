@@ -64,4 +64,13 @@ fails_with "an unknown command shows the commands" "unknown command 'paint'" pai
 check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast error-budget uncovered tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
+output=$(SPECULA_GL_DEBUG=1 "$specula" render --scene quad --size 64x48 --out "$work/debug.png" 2>&1)
+check "SPECULA_GL_DEBUG turns the driver's messages on and says so" grep -q "GL debug output on (SPECULA_GL_DEBUG)" <<<"$output"
+gpu_check="$(dirname "$0")/../../docker/gpu-check.sh"
+build="$(dirname "$specula")/.."
+output=$("$gpu_check" "$work/no-build" "$work/gc" 2>&1); status=$?
+check "gpu-check without a build says how to build" bash -c "[[ $status == 2 ]] && grep -q 'build first' <<<\"\$0\"" "$output"
+output=$(GL=glx "$gpu_check" "$build" "$work/gc" 2>&1); status=$?
+check "gpu-check without a usable GL stops at once and says why" bash -c "[[ $status == 1 ]] && grep -q -- '--gl expects auto' <<<\"\$0\"" "$output"
+
 finish

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "gl/GlContext.h"
 #include "gl/ShaderProgram.h"
 #include "scene/Scene.h"
@@ -46,6 +48,35 @@ TEST_P(GlPlatformTest, ReportsMissingShaderFileByName) {
   auto program = gl::ShaderProgram::build((*context)->api(), {"nope/missing.frag"});
   ASSERT_FALSE(program);
   EXPECT_NE(program.error().find("shaders/nope/missing.frag"), std::string::npos) << program.error();
+}
+
+// SPECULA_GL_DEBUG=1 is how a deployer sees what a driver complains about (on NVIDIA: shader
+// recompiles, buffers moved to host memory): an error reaches stderr once, and nothing without it.
+// OSMesa has no debug contexts and Mesa stays silent in others, which the line that turns it on says.
+TEST_P(GlPlatformTest, DriverMessagesReachStderrOnlyWhenAskedFor) {
+  const auto stderrAroundABadCall = [&](bool asked) {
+    if (asked) ::setenv("SPECULA_GL_DEBUG", "1", 1);
+    ::testing::internal::CaptureStderr();
+    auto context = gl::GlContext::create(GetParam());
+    ::unsetenv("SPECULA_GL_DEBUG");
+    if (context) {
+      for (int i = 0; i < 3; ++i) (*context)->api().BindBuffer(0xDEAD, 0);  // GL_INVALID_ENUM, three times
+      EXPECT_EQ((*context)->api().GetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+    }
+    std::string printed = ::testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(context) << context.error();
+    return printed;
+  };
+  EXPECT_EQ(stderrAroundABadCall(false), "");
+  const std::string printed = stderrAroundABadCall(true);
+  if (GetParam() == gl::PlatformChoice::OsMesa) {
+    EXPECT_NE(printed.find("gave no debug context"), std::string::npos) << printed;
+    return;
+  }
+  const std::size_t first = printed.find("GL debug (");
+  ASSERT_NE(first, std::string::npos) << printed;
+  EXPECT_NE(printed.find("type 0x824C"), std::string::npos) << "GL_DEBUG_TYPE_ERROR: " << printed;
+  EXPECT_EQ(printed.find("GL debug (", first + 1), std::string::npos) << "each message once: " << printed;
 }
 
 INSTANTIATE_TEST_SUITE_P(Software, GlPlatformTest, specula::testing::kSoftwarePlatforms,

@@ -283,11 +283,31 @@ TEST(ReflectionSearch, CheckerSphereFrameAgreesWithTheRayTracedReference) {
   EXPECT_LE(mismatch->share(), 0.14);
   EXPECT_GE(*reference::psnr(ours, theirs), 18.0);
   EXPECT_GE(*reference::ssim(ours, theirs), 0.93);
-  // Outside the mirror the two renderers agree to the byte (±1 for sRGB rounding).
-  for (std::size_t i = 0; i < truth->mirrorMask.size(); ++i) {
-    if (truth->mirrorMask[i]) continue;
-    for (int c = 0; c < 3; ++c) ASSERT_LE(std::abs(frame->rgba[i * 4 + c] - truth->rgba[i * 4 + c]), 1) << "pixel " << i;
-  }
+  // Outside the mirror the two renderers agree to the byte (±1 for sRGB rounding), except where a
+  // checker edge runs through a pixel's centre: there a last-bit difference in the floor's position
+  // picks the other square (seen once at 320x240 on an H200; never on llvmpipe). Such a pixel has
+  // our colour in a neighbour of the reference, and there may be only a handful.
+  const auto sameColour = [&](std::size_t framePixel, std::size_t truthPixel) {
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(frame->rgba[framePixel * 4 + c] - truth->rgba[truthPixel * 4 + c]) > 1) return false;
+    return true;
+  };
+  std::size_t outside = 0, onAnEdge = 0;
+  for (int y = 0; y < 240; ++y)
+    for (int x = 0; x < 320; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * 320 + static_cast<std::size_t>(x);
+      if (truth->mirrorMask[i]) continue;
+      ++outside;
+      if (sameColour(i, i)) continue;
+      bool neighbourHasIt = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          if (x + dx >= 0 && x + dx < 320 && y + dy >= 0 && y + dy < 240)
+            neighbourHasIt = neighbourHasIt || sameColour(i, static_cast<std::size_t>(y + dy) * 320 + static_cast<std::size_t>(x + dx));
+      ASSERT_TRUE(neighbourHasIt) << "pixel (" << x << ", " << y << ") outside the mirror differs from the reference";
+      ++onAnEdge;
+    }
+  EXPECT_LE(onAnEdge, outside / 5000) << "pixels on a checker edge that took the other square";
 }
 
 TEST(ReflectionSearch, SeveralMovingMirrorsAreSearchedEveryFrame) {

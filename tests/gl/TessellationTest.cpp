@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <string>
 
 #include "gl/GlContext.h"
 #include "reference/ImageMetrics.h"
@@ -186,9 +187,13 @@ TEST(Tessellation, CheckerSphereMismatchFallsAsTheThresholdFalls) {
 // The round's decision is split into a classification of every triangle, a search of only the
 // edges it lists and a decision per triangle. On the scenes of these tests it splits exactly what
 // the single split kernel it replaced did (rounds and searches measured at 640x480 on the second
-// frame at time 0 with the default settings, before the change). It finishes fewer: the single
-// kernel also emitted triangles no virtual triangle could be drawn from (a corner unreflected or
-// every corner hidden), 243, 1496 and 27034 then; those are now left out before emission.
+// frame at time 0 with the default settings, before the change, on llvmpipe). It finishes fewer: the
+// single kernel also emitted triangles no virtual triangle could be drawn from (a corner unreflected
+// or every corner hidden), 243, 1496 and 27034 then; those are now left out before emission.
+// Another driver rounds differently (NVIDIA's fused multiply-adds): an edge whose error lies within
+// rounding of the threshold splits there and not here, and the difference grows with each round
+// (measured on an H200: checker-sphere 1332 finished, 5147 searches, last round 169 of 182). There
+// the counts must agree to 2 % overall and 10 % per round, the same deterministic frame every time.
 TEST(Tessellation, ClassifyingThenSearchingSplitsWhatTheSingleKernelDid) {
   struct Expected {
     const char* scene;
@@ -200,13 +205,25 @@ TEST(Tessellation, ClassifyingThenSearchingSplitsWhatTheSingleKernelDid) {
                                    Expected{"teapot-table", 26500, 26999, 4159, {26500, 136, 149, 230, 277}}}) {
     Rig rig = makeRig(expected.scene);
     ASSERT_TRUE(rig.renderer);
+    const bool measuredDriver = rig.context->info().renderer.find("llvmpipe") != std::string::npos;
+    const auto expectCount = [&](std::uint32_t actual, std::uint32_t wanted, double tolerance, const std::string& what) {
+      if (measuredDriver) {
+        EXPECT_EQ(actual, wanted) << expected.scene << ": " << what;
+      } else {
+        EXPECT_NEAR(actual, wanted, tolerance * wanted) << expected.scene << ": " << what << " on " << rig.context->info().renderer;
+      }
+    };
     renderFrame(rig, {}, 640, 480);
     const render::RenderedFrame frame = renderFrame(rig, {}, 640, 480);
     const passes::TessellationStatistics& statistics = frame.tessellation;
     EXPECT_EQ(statistics.inputTriangles, expected.inputTriangles) << expected.scene;
-    EXPECT_EQ(statistics.finishedTriangles, expected.drawableFinishedTriangles) << expected.scene;
-    EXPECT_EQ(statistics.midpointSearches.searched, expected.midpointSearches) << expected.scene;
-    EXPECT_EQ(statistics.trianglesPerRound, expected.trianglesPerRound) << expected.scene;
+    expectCount(statistics.finishedTriangles, expected.drawableFinishedTriangles, 0.02, "finished triangles");
+    expectCount(statistics.midpointSearches.searched, expected.midpointSearches, 0.02, "midpoint searches");
+    ASSERT_EQ(statistics.trianglesPerRound.size(), expected.trianglesPerRound.size()) << expected.scene;
+    for (std::size_t round = 0; round < expected.trianglesPerRound.size(); ++round)
+      expectCount(statistics.trianglesPerRound[round], expected.trianglesPerRound[round], 0.10, "round " + std::to_string(round));
+    const render::RenderedFrame again = renderFrame(rig, {}, 640, 480);
+    EXPECT_EQ(again.tessellation.trianglesPerRound, statistics.trianglesPerRound) << expected.scene << ": the same frame splits the same";
   }
 }
 

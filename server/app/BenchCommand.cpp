@@ -36,12 +36,12 @@ CommandLine benchOptions() {
       {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
-      searchOption(),
   };
+  for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
       "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
-      "[--search crosshair|hierarchy] "
+      "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
@@ -50,8 +50,9 @@ CommandLine benchOptions() {
       "the ray-traced reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is\n"
       "the last pose drawn with no reflection (--method none): the scene's own raster, below which no method\n"
       "can go. --plan everything turns the frame planner off (no culling, no ray-cast mirrors) for comparison.\n"
-      "\"searches\" renders the first frames again with each search (crosshair, hierarchy), every mirror part\n"
-      "searched: median ms of the search stages, steps, and the hierarchy's enlarged and in-no-cone vertices.\n"
+      "\"searches\" renders the first frames again with each search (crosshair, hierarchy, explosion-map\n"
+      "unrefined), every mirror part searched: median ms of the search stages (the explosion map's build\n"
+      "included), steps (map look-ups for the explosion map), and the hierarchy's enlarged and in-no-cone vertices.\n"
       "Prints a table and writes the same numbers as CSV and JSON.\n"
       "`specula bench tessellation --help` describes the tessellation sweep, `specula bench accuracy --help`\n"
       "the accuracy-against-time report.",
@@ -276,9 +277,7 @@ int runBench(std::span<const std::string> arguments) {
   }
   settings.reference = !options.has("no-reference");
   if (Status status = parsePlanOptions(options, settings.reflection); !status) return fail(status.error());
-  auto search = parseSearchOption(options);
-  if (!search) return fail(search.error());
-  settings.reflection.search = *search;
+  if (Status status = parseSearchOptions(options, settings.reflection); !status) return fail(status.error());
   std::vector<std::string> builtins;
   for (std::string_view name : scene::builtinSceneNames()) builtins.emplace_back(name);
   const std::vector<std::string> names = sceneList(options, builtins);

@@ -49,18 +49,50 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
   return settings;
 }
 
-OptionSpec searchOption() {
-  return {"search", "HOW",
-          "crosshair (Estalella: climb 3x3 windows from last frame's texel) | hierarchy (Szabo: down bounding spheres "
-          "and cones of the mirror's reflected rays)",
-          "crosshair"};
+std::vector<OptionSpec> searchOptions() {
+  const passes::ReflectionSettings defaults;
+  return {
+      {"search", "HOW",
+       "crosshair (Estalella: climb 3x3 windows from last frame's texel) | hierarchy (Szabo: down bounding spheres and "
+       "cones of the mirror's reflected rays) | explosion-map (Ofek & Rappoport: look up near and far maps of the "
+       "mirror's reflected-ray directions; no search)",
+       "crosshair"},
+      {"explosion-map-size", "N",
+       "explosion-map side in texels, " + std::to_string(passes::kMinExplosionMapSize) + " to " +
+           std::to_string(passes::kMaxExplosionMapSize),
+       std::to_string(defaults.explosionMapSize)},
+      {"explosion-refine", "on|off", "explosion-map: climb and refine from each map point with the crosshair search", "off"},
+      {"explosion-placement", "HOW",
+       "explosion-map: eye-ray (a vertex on the eye's ray through the reflection point the maps give) | mirror (the "
+       "paper: mirrored across the maps' planes, which magnifies their error)",
+       "eye-ray"},
+      {"virtual-pixels", "HOW",
+       "exact-hit (a virtual triangle's pixels cast their reflected rays at its object triangle) | as-placed (shaded "
+       "where the triangle lies, as the papers draw; the default with --method explosion-map)",
+       "exact-hit"},
+  };
 }
 
-Result<passes::SearchStrategy> parseSearchOption(const CommandLine& options) {
+Status parseSearchOptions(const CommandLine& options, passes::ReflectionSettings& settings) {
   const std::string search = options.text("search");
-  if (search == passes::searchStrategyName(passes::SearchStrategy::Crosshair)) return passes::SearchStrategy::Crosshair;
-  if (search == passes::searchStrategyName(passes::SearchStrategy::Hierarchy)) return passes::SearchStrategy::Hierarchy;
-  return Error{"--search expects crosshair or hierarchy, got '" + search + "'"};
+  const std::optional<passes::SearchStrategy> strategy = passes::parseSearchStrategy(search);
+  if (!strategy) return Error{"--search expects crosshair, hierarchy or explosion-map, got '" + search + "'"};
+  settings.search = *strategy;
+  auto size = options.integer("explosion-map-size", passes::kMinExplosionMapSize, passes::kMaxExplosionMapSize);
+  if (!size) return Error{size.error()};
+  settings.explosionMapSize = *size;
+  const std::string refine = options.text("explosion-refine");
+  if (refine != "on" && refine != "off") return Error{"--explosion-refine expects on or off, got '" + refine + "'"};
+  settings.explosionRefine = refine == "on";
+  const std::string placement = options.text("explosion-placement");
+  if (placement != "eye-ray" && placement != "mirror")
+    return Error{"--explosion-placement expects eye-ray or mirror, got '" + placement + "'"};
+  settings.explosionMirrorPlacement = placement == "mirror";
+  const std::string pixels = options.text("virtual-pixels");
+  if (pixels == "exact-hit") settings.virtualPixels = passes::VirtualPixels::ExactHit;
+  else if (pixels == "as-placed") settings.virtualPixels = passes::VirtualPixels::AsPlaced;
+  else return Error{"--virtual-pixels expects exact-hit or as-placed, got '" + pixels + "'"};
+  return {};
 }
 
 std::vector<OptionSpec> planOptions() {
@@ -117,8 +149,8 @@ std::vector<OptionSpec> reflectionOptions() {
       {"gbuffer-scale", "X", scale, "1"},
       {"gbuffer-precision", "BITS", "G-buffer float bits: 32 (RGBA32F) or 16 (RGBA16F)", "32"},
       {"environment-size", "N", faceSize, std::to_string(defaults.environmentMapSize)},
-      searchOption(),
   };
+  for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : tessellationOptions()) specs.push_back(std::move(spec));
   return specs;
@@ -143,9 +175,7 @@ Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& opt
   auto cubeFace = options.integer("environment-size", passes::kMinEnvironmentMapSize, passes::kMaxEnvironmentMapSize);
   if (!cubeFace) return Error{cubeFace.error()};
   settings.environmentMapSize = *cubeFace;
-  auto search = parseSearchOption(options);
-  if (!search) return Error{search.error()};
-  settings.search = *search;
+  if (Status status = parseSearchOptions(options, settings); !status) return Error{status.error()};
   if (Status status = parsePlanOptions(options, settings); !status) return Error{status.error()};
   auto tessellation = parseTessellationOptions(options);
   if (!tessellation) return Error{tessellation.error()};

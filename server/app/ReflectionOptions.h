@@ -15,11 +15,11 @@ std::vector<OptionSpec> tessellationOptions();
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
 
-// --search: how the search finds each vertex's texel (crosshair or hierarchy).
-OptionSpec searchOption();
+// --search (crosshair, hierarchy or explosion-map), --explosion-map-size and --explosion-refine.
+std::vector<OptionSpec> searchOptions();
 
-// Reads it, or says what it accepts.
-Result<passes::SearchStrategy> parseSearchOption(const CommandLine& options);
+// Reads them into `settings`, or says which value is wrong and what it accepts.
+Status parseSearchOptions(const CommandLine& options, passes::ReflectionSettings& settings);
 
 // --plan and --ray-cast: what the frame plan leaves out and which mirror parts it ray-casts.
 std::vector<OptionSpec> planOptions();

@@ -32,18 +32,19 @@ CommandLine renderOptions() {
       {"up", "x,y,z", "camera up direction", ""},
       {"fov", "DEG", "vertical field of view in degrees", ""},
       {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
-      {"method", "METHOD", "search | environment-map | raytrace | none", "search"},
+      {"method", "METHOD", "search | explosion-map (= search with --search explosion-map) | environment-map | raytrace | none", "search"},
   };
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
   specs.push_back(glOption());
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy] "
+      "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
+      "explosion-map = virtual objects placed by Ofek & Rappoport's explosion maps instead of a search (GL);\n"
       "environment-map = the usual engine shortcut, a cube map from each mirror's centre (GL; no parallax);\n"
       "raytrace = the exact reference (Embree, CPU); none = mirrors in their own colour only (GL).",
       std::move(specs));
@@ -121,6 +122,12 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
                   search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
                   search.coldStarts, search.hidden, search.unsolved);
     text += line;
+    if (settings.search == passes::SearchStrategy::ExplosionMap) {
+      std::snprintf(line, sizeof line, " (explosion map %dx%d%s: steps are map look-ups%s)", settings.explosionMapSize,
+                    settings.explosionMapSize, settings.explosionRefine ? ", refined" : "",
+                    settings.explosionRefine ? " plus climbing windows" : "");
+      text += line;
+    }
     if (settings.search == passes::SearchStrategy::Hierarchy) {
       std::snprintf(line, sizeof line, ", %u in no cone until enlarged, %u in none even then", search.enlarged, search.inNoCone);
       text += line;
@@ -175,10 +182,17 @@ int runRender(std::span<const std::string> arguments) {
   if (Status status = overrideCamera(options, pose.camera); !status) return fail(status.error());
 
   const std::string method = options.text("method");
-  if (method != "search" && method != "environment-map" && method != "raytrace" && method != "none")
-    return fail("--method expects search, environment-map, raytrace or none, got '" + method + "'");
+  if (method != "search" && method != "explosion-map" && method != "environment-map" && method != "raytrace" && method != "none")
+    return fail("--method expects search, explosion-map, environment-map, raytrace or none, got '" + method + "'");
   auto settings = parseReflectionOptions(options);
   if (!settings) return fail(settings.error());
+  if (method == "explosion-map") {
+    if (options.text("search") != passes::searchStrategyName(passes::SearchStrategy::Crosshair) &&
+        settings->search != passes::SearchStrategy::ExplosionMap)
+      return fail("--method explosion-map places vertices by the maps; it cannot take --search " + options.text("search"));
+    settings->search = passes::SearchStrategy::ExplosionMap;
+    if (!options.has("virtual-pixels")) settings->virtualPixels = passes::VirtualPixels::AsPlaced;  // the paper's whole method
+  }
   settings->method = method == "none"              ? passes::ReflectionMethod::None
                      : method == "environment-map" ? passes::ReflectionMethod::EnvironmentMap
                                                    : passes::ReflectionMethod::Search;

@@ -35,7 +35,8 @@ CommandLine serveOptions() {
       {"max-size", "WxH", "largest viewport a client may ask for", "3840x2160"},
   };
   std::vector<OptionSpec> sessionDefaults = tessellationOptions();
-  sessionDefaults.insert(sessionDefaults.begin(), searchOption());
+  const std::vector<OptionSpec> search = searchOptions();
+  sessionDefaults.insert(sessionDefaults.begin(), search.begin(), search.end());
   for (OptionSpec& spec : sessionDefaults) {
     spec.help += " (sessions' default)";
     specs.push_back(std::move(spec));
@@ -73,13 +74,14 @@ int runServe(std::span<const std::string> arguments) {
   auto maxFps = options.number("max-fps");
   auto maxSize = options.size("max-size", 16384);
   auto tessellation = parseTessellationOptions(options);
-  auto search = parseSearchOption(options);
+  passes::ReflectionSettings searchDefaults;
+  const Status search = parseSearchOptions(options, searchDefaults);
   for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
                                renderThreads ? Status{} : Error{renderThreads.error()},
                                encodeThreads ? Status{} : Error{encodeThreads.error()},
                                stillDelay ? Status{} : Error{stillDelay.error()}, maxFps ? Status{} : Error{maxFps.error()},
                                maxSize ? Status{} : Error{maxSize.error()},
-                               tessellation ? Status{} : Error{tessellation.error()}, search ? Status{} : Error{search.error()}})
+                               tessellation ? Status{} : Error{tessellation.error()}, search})
     if (!status) return fail(status.error());
   if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
@@ -114,7 +116,9 @@ int runServe(std::span<const std::string> arguments) {
   config.hub.stillDelay = std::chrono::milliseconds(*stillDelay);
   config.hub.maxFps = *maxFps;
   config.hub.defaults.reflection.tessellation = *tessellation;
-  config.hub.defaults.reflection.search = *search;
+  config.hub.defaults.reflection.search = searchDefaults.search;
+  config.hub.defaults.reflection.explosionMapSize = searchDefaults.explosionMapSize;
+  config.hub.defaults.reflection.explosionRefine = searchDefaults.explosionRefine;
   config.hub.scheduler = {*renderThreads, *encodeThreads};
   config.server = serverOptions;
   auto service = Service::start(std::move(config));

@@ -126,6 +126,24 @@ std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
   hierarchy = {"hierarchy search", "hierarchy", {}};
   hierarchy.settings.search = passes::SearchStrategy::Hierarchy;
   sweep.push_back(hierarchy);
+  // Ofek & Rappoport's explosion map: the paper's whole method (map look-ups, triangles drawn where
+  // they lie) at three map sizes, then its look-ups refined by the crosshair search.
+  for (int side : {128, 256, 512}) {
+    AccuracySetting map{"explosion map " + std::to_string(side), "explosion map", {}};
+    map.settings.search = passes::SearchStrategy::ExplosionMap;
+    map.settings.explosionMapSize = side;
+    map.settings.virtualPixels = passes::VirtualPixels::AsPlaced;
+    sweep.push_back(map);
+  }
+  AccuracySetting mirrored{"explosion map 256, mirrored (the paper)", "explosion map", {}};
+  mirrored.settings.search = passes::SearchStrategy::ExplosionMap;
+  mirrored.settings.explosionMirrorPlacement = true;
+  mirrored.settings.virtualPixels = passes::VirtualPixels::AsPlaced;
+  sweep.push_back(mirrored);
+  AccuracySetting refined{"explosion map 256, refined", "explosion map", {}};
+  refined.settings.search = passes::SearchStrategy::ExplosionMap;
+  refined.settings.explosionRefine = true;
+  sweep.push_back(refined);
   // (A scene with such a mirror already searches its mesh: its hierarchy rows are the general path.)
   if (std::any_of(scene.objects.begin(), scene.objects.end(), approximatesAnExactShape))
     for (const glm::ivec2 mesh : {glm::ivec2(32, 16), glm::ivec2(64, 32), glm::ivec2(128, 64), glm::ivec2(256, 128)})

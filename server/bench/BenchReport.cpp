@@ -75,8 +75,9 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"uncovered_ray_cast_px", std::to_string(r.uncoveredRayCast)});
   f.push_back({"cast_object_tiles", std::to_string(r.castTiles.listed)});
   f.push_back({"cast_object_tiles_possible", std::to_string(r.castTiles.possible)});
-  for (const passes::SearchStrategy strategy : {passes::SearchStrategy::Crosshair, passes::SearchStrategy::Hierarchy}) {
-    const std::string name = passes::searchStrategyName(strategy);
+  for (const passes::SearchStrategy strategy : passes::kSearchStrategies) {
+    std::string name = passes::searchStrategyName(strategy);
+    std::replace(name.begin(), name.end(), '-', '_');  // explosion_map_*: column names are identifiers
     const auto measured = std::find_if(r.searches.begin(), r.searches.end(), [&](const auto& s) { return s.strategy == strategy; });
     const bool has = measured != r.searches.end();
     f.push_back({name + "_search_ms", has ? number(measured->milliseconds, 3) : ""});

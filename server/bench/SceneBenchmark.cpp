@@ -65,12 +65,14 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
 // Frames each search strategy is timed on, after the cold one.
 constexpr int kSearchComparisonFrames = 10;
 
-// Both search strategies along the scene's first frames (coherence from the first, cold, one).
+// Every search strategy (the explosion map's look-ups unrefined) along the scene's first frames
+// (coherence from the first, cold, one).
 Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::Renderer& renderer, const BenchOptions& options) {
   std::vector<SceneBenchResult::SearchComparison> comparisons;
-  for (passes::SearchStrategy strategy : {passes::SearchStrategy::Crosshair, passes::SearchStrategy::Hierarchy}) {
+  for (passes::SearchStrategy strategy : passes::kSearchStrategies) {
     passes::ReflectionSettings settings = options.reflection;
     settings.search = strategy;
+    settings.explosionRefine = false;
     settings.rayCast = passes::RayCastRule::Never;  // every visible mirror part searched, so both searches are compared
     renderer.resetCoherence();
     SceneBenchResult::SearchComparison comparison{strategy, 0.0, {}, 0, 0};
@@ -86,7 +88,8 @@ Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::
       comparison.inNoCone += rendered->search.inNoCone;
       double searchStages = 0.0;
       for (const render::StageTiming& stage : rendered->timings.stages)
-        if (stage.name == "gbuffer-pyramid" || stage.name == "ray-hierarchy" || stage.name == "search") searchStages += stage.milliseconds;
+        if (stage.name == "gbuffer-pyramid" || stage.name == "ray-hierarchy" || stage.name == "explosion-map" || stage.name == "search")
+          searchStages += stage.milliseconds;
       milliseconds.push_back(searchStages);
     }
     if (milliseconds.empty()) return std::vector<SceneBenchResult::SearchComparison>{};

@@ -225,7 +225,16 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   plan.search = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
                             [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
   if (plan.search)
-    plan.passes.insert(plan.passes.end(), {settings.search == SearchStrategy::Hierarchy ? "ray-hierarchy" : "gbuffer-pyramid", "search"});
+    switch (settings.search) {
+      case SearchStrategy::Crosshair: plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"}); break;
+      case SearchStrategy::Hierarchy: plan.passes.insert(plan.passes.end(), {"ray-hierarchy", "search"}); break;
+      case SearchStrategy::ExplosionMap:
+        // The refinement's climb falls back to the pyramid's cold start where the map's point is off the part.
+        plan.passes.push_back("explosion-map");
+        if (settings.explosionRefine) plan.passes.push_back("gbuffer-pyramid");
+        plan.passes.push_back("search");
+        break;
+    }
   plan.tessellate = plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back("tessellation");
   plan.passes.push_back("virtual-objects");

@@ -126,6 +126,25 @@ void ReflectionResources::prepareRayHierarchy() {
   rayHierarchyCovered_.assign(std::max<std::size_t>(slots_.mirrors.size(), 1), TexelRect{{0, 0}, size_});
 }
 
+void ReflectionResources::prepareExplosionMaps(int side) {
+  if (explosionPositions_ && explosionSide_ == side) return;
+  const GLsizei layers = static_cast<GLsizei>(2 * std::max<std::size_t>(slots_.mirrors.size(), 1));
+  explosionSide_ = side;
+  explosionPositions_.emplace(*gl_);
+  explosionNormals_.emplace(*gl_);
+  explosionDepth_.emplace(*gl_);
+  for (const gl::GlTexture* texture : {&*explosionPositions_, &*explosionNormals_}) {
+    gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
+    gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RGBA32F, side, side, layers);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  gl_->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  gl_->BindTexture(GL_TEXTURE_2D, explosionDepth_->id());
+  gl_->TexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, side, side);
+  gl_->BindTexture(GL_TEXTURE_2D, 0);
+}
+
 TexelRect ReflectionResources::takeRayHierarchyRebuild(int layer) {
   TexelRect& built = rayHierarchyCovered_[static_cast<std::size_t>(layer)];
   const TexelRect rebuild = built.united(covered_[static_cast<std::size_t>(layer)]);

@@ -75,6 +75,14 @@ class ReflectionResources {
   // The leaves a layer's hierarchy must rebuild this frame (its cones follow the eye): this frame's
   // cover and the one it was last built for, which then becomes this frame's.
   TexelRect takeRayHierarchyRebuild(int layer);
+  // The explosion maps (shaders/common/explosion-map.glsl), `side` texels square: positions and
+  // normals, two layers per mirror part (near, far), and the depth and framebuffer that draw them.
+  // Reallocated when the side changes.
+  void prepareExplosionMaps(int side);
+  GLuint explosionPositions() const { return explosionPositions_->id(); }
+  GLuint explosionNormals() const { return explosionNormals_->id(); }
+  GLuint explosionDepth() const { return explosionDepth_->id(); }
+  int explosionMapSide() const { return explosionSide_; }
   TessellationBuffers& tessellation() { return tessellation_; }
   const TessellationBuffers& tessellation() const { return tessellation_; }
 
@@ -111,6 +119,8 @@ class ReflectionResources {
   gl::GlTexture position_, normal_, depth_;
   std::optional<gl::GlTexture> rayHierarchySpheres_, rayHierarchyCones_;  // empty until a search uses them
   int rayHierarchyTop_ = 0;
+  std::optional<gl::GlTexture> explosionPositions_, explosionNormals_, explosionDepth_;  // empty until a map is drawn
+  int explosionSide_ = 0;
   std::vector<TexelRect> rayHierarchyCovered_;
   gl::GlFramebuffer framebuffer_;
   gl::GlBuffer reflected_, statistics_;

@@ -5,7 +5,18 @@
 namespace specula::passes {
 
 const char* searchStrategyName(SearchStrategy strategy) {
-  return strategy == SearchStrategy::Hierarchy ? "hierarchy" : "crosshair";
+  switch (strategy) {
+    case SearchStrategy::Crosshair: return "crosshair";
+    case SearchStrategy::Hierarchy: return "hierarchy";
+    case SearchStrategy::ExplosionMap: return "explosion-map";
+  }
+  return "?";
+}
+
+std::optional<SearchStrategy> parseSearchStrategy(std::string_view name) {
+  for (SearchStrategy strategy : kSearchStrategies)
+    if (name == searchStrategyName(strategy)) return strategy;
+  return std::nullopt;
 }
 
 std::string describeTessellation(const TessellationSettings& settings) {
@@ -33,6 +44,9 @@ std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& s
     std::snprintf(text, sizeof text, "the error budget must lie in [0, %g] pixels", kMaxErrorBudgetPixels);
     return text;
   }
+  if (settings.explosionMapSize < kMinExplosionMapSize || settings.explosionMapSize > kMaxExplosionMapSize)
+    return "explosion map size must lie in [" + std::to_string(kMinExplosionMapSize) + ", " + std::to_string(kMaxExplosionMapSize) +
+           "] texels per side";
   if (settings.maxWalkSteps < 1) return "the search needs at least one step per climb";
   return std::nullopt;
 }

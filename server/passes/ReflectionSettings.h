@@ -1,6 +1,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace specula::passes {
 
@@ -21,10 +22,29 @@ enum class SearchStrategy {
   // Szabo 2013, ch. 4: top-down through a pyramid of bounding spheres of the mirror's positions and
   // cones of its reflected eye rays, into the cones that hold the vertex. No coherence.
   Hierarchy,
+  // Ofek & Rappoport 1998, §4: no search. Per part and frame, near and far explosion maps (the
+  // part's reflected-ray directions through a sphere about it); a vertex is mirrored across the
+  // planes the maps give in the direction from the part's centre to it, hidden ones across the
+  // surface in front of them. Optionally refined by the crosshair climb from the map's point.
+  ExplosionMap,
 };
 
-// "crosshair" or "hierarchy": how reports and the command line name a strategy.
+inline constexpr SearchStrategy kSearchStrategies[] = {SearchStrategy::Crosshair, SearchStrategy::Hierarchy,
+                                                      SearchStrategy::ExplosionMap};
+
+// "crosshair", "hierarchy" or "explosion-map": how reports and the command line name a strategy.
 const char* searchStrategyName(SearchStrategy strategy);
+std::optional<SearchStrategy> parseSearchStrategy(std::string_view name);
+
+// What a virtual triangle's fragments show.
+enum class VirtualPixels {
+  // Each fragment casts its pixel's reflected ray against the object triangle and shows the exact
+  // hit (or nothing): the triangle's placement decides only which pixels it is tried at.
+  ExactHit,
+  // The papers' rendering: the triangle is shaded where it lies, kept to the mirror's own pixels (the
+  // stencil is Ofek & Rappoport's second z-buffer), so placement errors show as displaced reflections.
+  AsPlaced,
+};
 
 // Storage of the mirror G-buffer's world positions and normals.
 enum class GBufferPrecision {
@@ -75,6 +95,7 @@ std::string describeTessellation(const TessellationSettings& settings);
 inline constexpr float kMinGBufferScale = 0.125f, kMaxGBufferScale = 4.0f;
 inline constexpr int kMinEnvironmentMapSize = 8, kMaxEnvironmentMapSize = 2048;
 inline constexpr float kMaxErrorBudgetPixels = 16.0f;
+inline constexpr int kMinExplosionMapSize = 16, kMaxExplosionMapSize = 4096;
 
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;
@@ -86,6 +107,14 @@ struct ReflectionSettings {
   GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;
   int environmentMapSize = 256;  // cube face side in texels (EnvironmentMap), in [kMin, kMaxEnvironmentMapSize]
   SearchStrategy search = SearchStrategy::Crosshair;
+  // ExplosionMap: each map's side in texels, in [kMin, kMaxExplosionMapSize] (the paper: 200 for a
+  // mirror of several hundred triangles), and whether the crosshair search refines what it gives.
+  int explosionMapSize = 256;
+  bool explosionRefine = false;
+  // ExplosionMap: place a visible vertex as the paper does, mirrored across the maps' planes, instead
+  // of on the eye's ray through the reflection point they give.
+  bool explosionMirrorPlacement = false;
+  VirtualPixels virtualPixels = VirtualPixels::ExactHit;
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "passes/ExplosionMapPass.h"
 #include "passes/QuadricUniforms.h"
 #include "passes/ReflectedVertex.h"
 
@@ -24,16 +25,27 @@ Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
 void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   bindGBufferTextures(gl, frame.reflections);
+  // A strategy's texture arrays on their own units (2 and up; the G-buffer holds 0 and 1).
+  const auto bindArray = [&](GLuint unit, GLuint texture, const char* sampler) {
+    gl.ActiveTexture(GL_TEXTURE0 + unit);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, texture);
+    program.set(sampler, static_cast<int>(unit));
+  };
   const bool hierarchy = frame.settings.search == SearchStrategy::Hierarchy;
   if (hierarchy) {
-    gl.ActiveTexture(GL_TEXTURE2);
-    gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.rayHierarchySpheres());
-    gl.ActiveTexture(GL_TEXTURE3);
-    gl.BindTexture(GL_TEXTURE_2D_ARRAY, frame.reflections.rayHierarchyCones());
-    program.set("rayHierarchySpheres", 2);
-    program.set("rayHierarchyCones", 3);
+    bindArray(2, frame.reflections.rayHierarchySpheres(), "rayHierarchySpheres");
+    bindArray(3, frame.reflections.rayHierarchyCones(), "rayHierarchyCones");
     program.set("rayHierarchyTop", frame.reflections.rayHierarchyTopLevel());
   }
+  const bool explosionMap = frame.settings.search == SearchStrategy::ExplosionMap;
+  if (explosionMap) {
+    bindArray(4, frame.reflections.explosionPositions(), "explosionPositions");
+    bindArray(5, frame.reflections.explosionNormals(), "explosionNormals");
+  }
+  program.set("gbufferWorldToClip", frame.gbufferWorldToClip());
+  program.set("explosionMap", explosionMap ? 1 : 0);
+  program.set("explosionRefine", explosionMap && frame.settings.explosionRefine ? 1 : 0);
+  program.set("explosionMirrorPlacement", frame.settings.explosionMirrorPlacement ? 1 : 0);
   gl.ActiveTexture(GL_TEXTURE0);
   program.set("rayHierarchy", hierarchy ? 1 : 0);
   setGBufferSamplers(program);
@@ -56,6 +68,7 @@ void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame
   program.set("coarseLevel", level);
   program.set("coarseRect", glm::ivec4(covered.low >> level, ((covered.high - 1) >> level) + 1));
   setMirrorQuadric(program, *frame.scene.objects[mirror.mirrorObject].mirror, frame.pose.objectToWorld[mirror.mirrorObject]);
+  if (frame.settings.search == SearchStrategy::ExplosionMap) setExplosionMapFrame(program, frame, mirror);
 }
 
 std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots) {

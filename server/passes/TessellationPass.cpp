@@ -48,7 +48,6 @@ void TessellationPass::execute(const FrameContext& frame) {
     setSearchUniforms(*program, frame);
   }
   programs_.classify.use();
-  programs_.classify.set("gbufferWorldToClip", frame.gbufferWorldToClip());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kStatisticsBinding, buffers.midpointStatistics());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, buffers.counters());

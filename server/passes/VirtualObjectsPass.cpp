@@ -388,6 +388,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     setGBufferSamplers(*objects);
     objects->set("eyePosition", frame.pose.camera.eye);
     objects->set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
+    objects->set("drawAsPlaced", frame.settings.virtualPixels == VirtualPixels::AsPlaced ? 1 : 0);
     setGBufferPixelMapping(*objects, frame.reflections);
     setSceneLighting(*objects, frame.scene);
   }

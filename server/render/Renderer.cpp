@@ -13,6 +13,7 @@
 #include "passes/FramePlan.h"
 #include "passes/GBufferPyramidPass.h"
 #include "passes/MirrorGBufferPass.h"
+#include "passes/ExplosionMapPass.h"
 #include "passes/RayHierarchyPass.h"
 #include "passes/ScenePass.h"
 #include "passes/SearchPass.h"
@@ -79,6 +80,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::
                         addPass(renderer->passes_, passes::MirrorGBufferPass::create(gl)),
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
                         addPass(renderer->passes_, passes::RayHierarchyPass::create(gl)),
+                        addPass(renderer->passes_, passes::ExplosionMapPass::create(gl)),
                         addPass(renderer->passes_, passes::SearchPass::create(gl)),
                         addPass(renderer->passes_, passes::TessellationPass::create(gl)),
                         addPass(renderer->passes_, passes::VirtualObjectsPass::create(gl), &renderer->virtualObjects_),

@@ -47,7 +47,15 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
   out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
   out.set_plan(settings.reflection.plan == passes::PlanScope::Everything ? v1::PLAN_EVERYTHING : v1::PLAN_NEEDED);
-  out.set_search(settings.reflection.search == passes::SearchStrategy::Hierarchy ? v1::SEARCH_HIERARCHY : v1::SEARCH_CROSSHAIR);
+  switch (settings.reflection.search) {
+    case passes::SearchStrategy::Crosshair: out.set_search(v1::SEARCH_CROSSHAIR); break;
+    case passes::SearchStrategy::Hierarchy: out.set_search(v1::SEARCH_HIERARCHY); break;
+    case passes::SearchStrategy::ExplosionMap:
+      out.set_search(settings.reflection.explosionRefine ? v1::SEARCH_EXPLOSION_MAP_REFINED : v1::SEARCH_EXPLOSION_MAP);
+      break;
+  }
+  out.set_explosion_map_size(static_cast<std::uint32_t>(settings.reflection.explosionMapSize));
+  out.set_virtual_pixels(settings.reflection.virtualPixels == passes::VirtualPixels::AsPlaced ? v1::PIXELS_AS_PLACED : v1::PIXELS_EXACT_HIT);
   return out;
 }
 
@@ -321,8 +329,26 @@ Status Session::applySettings(const v1::RenderSettings& update) {
   switch (update.search()) {
     case v1::SEARCH_CROSSHAIR: settings.reflection.search = passes::SearchStrategy::Crosshair; break;
     case v1::SEARCH_HIERARCHY: settings.reflection.search = passes::SearchStrategy::Hierarchy; break;
+    case v1::SEARCH_EXPLOSION_MAP:
+    case v1::SEARCH_EXPLOSION_MAP_REFINED:
+      settings.reflection.search = passes::SearchStrategy::ExplosionMap;
+      settings.reflection.explosionRefine = update.search() == v1::SEARCH_EXPLOSION_MAP_REFINED;
+      break;
     case v1::SEARCH_UNSPECIFIED: break;
     default: return Error{"settings: unknown search strategy"};
+  }
+  if (update.explosion_map_size() != 0) {
+    if (update.explosion_map_size() < static_cast<std::uint32_t>(passes::kMinExplosionMapSize) ||
+        update.explosion_map_size() > static_cast<std::uint32_t>(passes::kMaxExplosionMapSize))
+      return Error{"settings: explosion_map_size must be in [" + std::to_string(passes::kMinExplosionMapSize) + ", " +
+                   std::to_string(passes::kMaxExplosionMapSize) + "]"};
+    settings.reflection.explosionMapSize = static_cast<int>(update.explosion_map_size());
+  }
+  switch (update.virtual_pixels()) {
+    case v1::PIXELS_EXACT_HIT: settings.reflection.virtualPixels = passes::VirtualPixels::ExactHit; break;
+    case v1::PIXELS_AS_PLACED: settings.reflection.virtualPixels = passes::VirtualPixels::AsPlaced; break;
+    case v1::PIXELS_UNSPECIFIED: break;
+    default: return Error{"settings: unknown virtual pixels"};
   }
   switch (update.metric()) {
     case v1::METRIC_PIXELS: t.metric = passes::TessellationMetric::Pixels; break;

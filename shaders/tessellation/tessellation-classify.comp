@@ -9,7 +9,6 @@ layout(local_size_x = 64) in;
 #include "common/search-core.glsl"
 #include "tessellation/tessellation-round.glsl"
 
-uniform mat4 gbufferWorldToClip;
 uniform vec4 mirrorRect;    // the mirror's bounds on screen in frame pixels: low x, y, high x, y
 uniform vec4 mirrorSphere;  // the mirror's bounding sphere in world space: centre, radius
 uniform int everyCornerReflected;  // 1 on concave and saddle parts (common/reflectable-triangle.glsl)

@@ -23,6 +23,9 @@ uniform sampler2DArray gbufferNormal;
 uniform int layer;           // the part's G-buffer layer
 uniform vec3 eyePosition;
 uniform mat4 worldToClip;    // the virtual objects' projection (far plane pushed out)
+// 1: the papers' rendering, each fragment shaded where the virtual triangle puts it (Ofek & Rappoport's
+// explosion map draws so), only kept to the part's own pixels; 0: the exact hit below.
+uniform int drawAsPlaced;
 
 // A hit this share of the triangle's shortest edge outside it still counts: float rounding on the
 // edge two triangles share must not leave a pixel to neither.
@@ -41,6 +44,11 @@ void main() {
   vec3 surface, surfaceNormal;
   // Off this part of the mirror (or its surface): not this part's pixel.
   if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, surface, surfaceNormal)) discard;
+  if (drawAsPlaced != 0) {
+    gl_FragDepth = gl_FragCoord.z;
+    outColor = vec4(reflectivity * shadeSurface(point, normalize(inFragment.worldNormal), inFragment.surfaceUv, surface), 1.0);
+    return;
+  }
   vec3 incoming = normalize(surface - eyePosition);
   vec3 reflected = reflect(incoming, surfaceNormal);
 

@@ -10,6 +10,7 @@ uniform mat4 worldToClip;          // far plane pushed out: virtual vertices lie
 uniform int everyCornerReflected;  // 1 on concave and saddle parts
 uniform vec2 frameSize;            // pixels
 uniform vec4 mirrorRect;           // the part's bounds on screen in frame pixels (GL origin): low x, y, high x, y
+uniform int drawAsPlaced;          // 1: the triangle is shaded where it lies (virtual-objects.frag), so not widened
 
 // The triangle is widened by this much on screen: its virtual image is right to the tessellation
 // threshold, and the fragment shader keeps only pixels whose reflected ray really meets it, so every
@@ -32,7 +33,7 @@ bool placeVirtualTriangle(TessellatedVertex c[3], out vec4 position[3]) {
   if (!reflectableTriangle(c, everyCornerReflected != 0)) return false;
   // Each corner moves away from the other two so that every edge moves out by the widening;
   // corners behind the eye (w <= 0) leave the triangle as it is.
-  if (position[0].w <= 0.0 || position[1].w <= 0.0 || position[2].w <= 0.0) return true;
+  if (drawAsPlaced != 0 || position[0].w <= 0.0 || position[1].w <= 0.0 || position[2].w <= 0.0) return true;
   vec2 screen[3];
   for (int i = 0; i < 3; ++i) screen[i] = position[i].xy / position[i].w * 0.5 * frameSize;
   float dilation = min(kDilationPixels, max(max(distance(screen[0], screen[1]), distance(screen[1], screen[2])),

@@ -66,8 +66,8 @@ fails_with "bench tessellation checks its outputs before work" "could not write 
 output=$("$specula" bench accuracy --scene quad --size 128x96 --poses 2 --out "$work/acc" 2>"$work/aprogress.txt")
 check "bench accuracy succeeds" test $? -eq 0
 check "bench accuracy reports progress per reference pose and setting" bash -c \
-  "grep -q 'bench accuracy quad \[1/23\] ray-traced reference, pose 1/2' '$work/aprogress.txt' && grep -q '\[23/23\] ray-cast every mirror' '$work/aprogress.txt'"
-check "its CSV has a header, the reference and 21 settings" test "$(wc -l <"$work/acc/accuracy.csv")" -eq 23
+  "grep -q 'bench accuracy quad \[1/28\] ray-traced reference, pose 1/2' '$work/aprogress.txt' && grep -q '\[28/28\] ray-cast every mirror' '$work/aprogress.txt'"
+check "its CSV has a header, the reference and 26 settings" test "$(wc -l <"$work/acc/accuracy.csv")" -eq 28
 check "both searches are side by side" grep -q "^quad,hierarchy search,hierarchy," "$work/acc/accuracy.csv"
 acolumns=$(head -1 "$work/acc/accuracy.csv" | tr ',' '\n' | wc -l)
 check "every accuracy CSV row has the header's columns (names with commas quoted)" \

@@ -33,8 +33,16 @@ fails_with "a bad tessellation mode lists the modes" "--tessellation expects non
 fails_with "a bad metric lists the metrics" "--metric expects pixels or angle" render --metric px
 fails_with "a negative threshold is refused" "--threshold expects a number >= 0" render --threshold -1
 fails_with "a level past the bound is refused" "--level expects an integer in [0, 8]" render --level 9
-fails_with "an unknown method lists the methods" "--method expects search, environment-map, raytrace or none" render --method cubemap
-fails_with "an unknown search lists the searches" "--search expects crosshair or hierarchy, got 'walk'" render --search walk
+fails_with "an unknown method lists the methods" "--method expects search, explosion-map, environment-map, raytrace or none" render --method cubemap
+output=$("$specula" render --scene mesh-sphere --size 160x120 --method explosion-map --ray-cast never --out "$work/em.png" 2>&1)
+check "--method explosion-map draws the maps and looks them up" bash -c "grep -q 'explosion-map .* ms, search' <<<\"\$0\" && grep -q '(explosion-map), steps mean 1.9' <<<\"\$0\" && grep -q 'explosion map 256x256: steps are map look-ups' <<<\"\$0\"" "$output"
+output=$("$specula" render --scene mesh-sphere --size 160x120 --search explosion-map --explosion-refine on --explosion-map-size 64 --ray-cast never --out "$work/emr.png" 2>&1)
+check "--explosion-refine on climbs from the map's point, with the pyramid for cold starts" bash -c "grep -q 'explosion-map .* ms, gbuffer-pyramid' <<<\"\$0\" && grep -q 'explosion map 64x64, refined' <<<\"\$0\"" "$output"
+fails_with "--method explosion-map refuses another search" "--method explosion-map places vertices by the maps; it cannot take --search hierarchy" render --method explosion-map --search hierarchy
+fails_with "a map size past the bound is refused" "--explosion-map-size" render --explosion-map-size 8
+fails_with "an unknown placement is refused" "--explosion-placement expects eye-ray or mirror, got 'plane'" render --explosion-placement plane
+fails_with "unknown virtual pixels are refused" "--virtual-pixels expects exact-hit or as-placed, got 'smooth'" render --virtual-pixels smooth
+fails_with "an unknown search lists the searches" "--search expects crosshair, hierarchy or explosion-map, got 'walk'" render --search walk
 fails_with "a G-buffer scale past the bound is refused" "--gbuffer-scale expects texels per pixel from 0.125 to 4, got '8'" render --gbuffer-scale 8
 fails_with "a non-numeric G-buffer scale is refused" "--gbuffer-scale expects texels per pixel" render --gbuffer-scale fine
 fails_with "a G-buffer precision other than 32 or 16 is refused" "--gbuffer-precision expects 32 or 16" render --gbuffer-precision 8
@@ -61,7 +69,7 @@ check "... and runs the environment-map pass, not the search" bash -c "grep -q '
 check "... and writes a PNG" bash -c "head -c 8 '$work/env.png' | od -An -tx1 | grep -q '89 50 4e 47'"
 fails_with "an unknown command shows the commands" "unknown command 'paint'" paint
 "$specula" render --help >"$work/help.txt"
-check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast error-budget uncovered tessellation metric threshold level out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
+check "render --help lists every option" bash -c "for o in scene size eye target up fov time plan ray-cast error-budget uncovered tessellation metric threshold level explosion-map-size explosion-refine explosion-placement virtual-pixels out gl; do grep -q -- \"--\$o \" '$work/help.txt' || exit 1; done"
 check "specula --help lists render and scenes" bash -c "'$specula' --help | grep -q '^  render' && '$specula' --help | grep -q '^  scenes'"
 
 output=$(SPECULA_GL_DEBUG=1 "$specula" render --scene quad --size 64x48 --out "$work/debug.png" 2>&1)

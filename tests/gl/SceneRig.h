@@ -25,17 +25,22 @@ inline passes::ReflectionSettings virtualObjects(passes::ReflectionSettings sett
   return settings;
 }
 
-// Both reflection-point searches, for tests that hold each to the same bounds.
-inline const std::vector<passes::SearchStrategy> kSearchStrategies{passes::SearchStrategy::Crosshair,
-                                                                   passes::SearchStrategy::Hierarchy};
+// Every way of finding reflection points, for tests that hold each to the same bounds: both searches,
+// and the explosion map refined by the crosshair search (the map's look-ups alone have their own,
+// wider bounds: tests/gl/ExplosionMapTest.cpp).
+inline const std::vector<passes::SearchStrategy> kSearchStrategies{passes::kSearchStrategies[0], passes::kSearchStrategies[1],
+                                                                   passes::kSearchStrategies[2]};
 
 inline passes::ReflectionSettings withSearch(passes::SearchStrategy search, passes::ReflectionSettings settings = virtualObjects()) {
   settings.search = search;
+  settings.explosionRefine = search == passes::SearchStrategy::ExplosionMap;
   return settings;
 }
 
 // A gtest parameter name for a search strategy.
-inline std::string searchName(passes::SearchStrategy search) { return passes::searchStrategyName(search); }
+inline std::string searchName(passes::SearchStrategy search) {
+  return search == passes::SearchStrategy::ExplosionMap ? "explosion_map_refined" : passes::searchStrategyName(search);
+}
 
 struct Rig {
   std::unique_ptr<gl::GlContext> context;

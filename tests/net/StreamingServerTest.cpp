@@ -148,7 +148,9 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_level(2);
     settings.mutable_settings()->set_jpeg_quality(70);
     settings.mutable_settings()->set_plan(v1::PLAN_EVERYTHING);
-    settings.mutable_settings()->set_search(v1::SEARCH_HIERARCHY);
+    settings.mutable_settings()->set_search(v1::SEARCH_EXPLOSION_MAP_REFINED);
+    settings.mutable_settings()->set_explosion_map_size(512);
+    settings.mutable_settings()->set_virtual_pixels(v1::PIXELS_AS_PLACED);
     settings.mutable_settings()->set_error_budget_px(-1.0f);  // 0: only exact decisions
     ASSERT_TRUE(client->send(settings).ok());
     ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
@@ -166,7 +168,9 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().level(), 2);
   EXPECT_EQ(welcome.settings().jpeg_quality(), 70u);
   EXPECT_EQ(welcome.settings().plan(), v1::PLAN_EVERYTHING);
-  EXPECT_EQ(welcome.settings().search(), v1::SEARCH_HIERARCHY);
+  EXPECT_EQ(welcome.settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
+  EXPECT_EQ(welcome.settings().explosion_map_size(), 512u);
+  EXPECT_EQ(welcome.settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
   EXPECT_EQ(welcome.settings().error_budget_px(), -1.0f);
   EXPECT_NE(welcome.resume_token(), token) << "a token resumes once";
 
@@ -263,6 +267,9 @@ TEST(StreamingServerInput, OutOfRangeValuesAreRefusedWithAnErrorAndTheSessionGoe
       R"({"settings":{"level":99}})",
       R"({"settings":{"plan":7}})",
       R"({"settings":{"search":9}})",
+      R"({"settings":{"explosionMapSize":8}})",
+      R"({"settings":{"explosionMapSize":100000}})",
+      R"({"settings":{"virtualPixels":5}})",
       R"({"settings":{"errorBudgetPx":99}})",
       R"({"settings":{"errorBudgetPx":-0.5}})",
       R"({"settings":{"resolutionScale":"Infinity"}})",

@@ -200,6 +200,17 @@ TEST(AccuracySweep, MeshMirrorsApproximatingAnExactShapeGetMeshResolutionRows) {
                             [](const auto& s) { return s.settings.search == passes::SearchStrategy::Hierarchy; }),
               2)
         << "both searches side by side, with and without tessellation";
+    EXPECT_EQ(std::count_if(sweep.begin(), sweep.end(),
+                            [](const auto& s) {
+                              return s.settings.search == passes::SearchStrategy::ExplosionMap &&
+                                     s.settings.virtualPixels == passes::VirtualPixels::AsPlaced && !s.settings.explosionRefine &&
+                                     !s.settings.explosionMirrorPlacement;
+                            }),
+              3)
+        << "the paper's explosion map at three map sizes";
+    EXPECT_EQ(std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.settings.explosionRefine; }), 1);
+    EXPECT_EQ(std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.settings.explosionMirrorPlacement; }), 1)
+        << "and once with the paper's placement";
   }
   // The re-meshed sphere lies on the exact shape, with its normals.
   const scene::Scene coarse = bench::withMirrorMeshes(mesh, {32, 16});

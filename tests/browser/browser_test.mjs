@@ -195,6 +195,20 @@ try {
   const after = await screenshot('browser-after-drag.png');
   const change = meanAbsoluteGreyDifference(shot, after);
   check('a drag changes the view (the canvas is not stale)', change >= kMinChangeAfterDrag, `mean grey change ${change.toFixed(1)}, eye.x ${moved.camera.eye.x.toFixed(2)}`);
+  // The explosion map from the browser's controls: the planner off (every mirror searched), the
+  // maps' look-ups (at most two a vertex, none climbing) drawn where they place the triangles.
+  await evaluate(`(() => {
+    for (const [id, value] of [['plan', 'PLAN_EVERYTHING'], ['search', 'SEARCH_EXPLOSION_MAP'], ['virtualPixels', 'PIXELS_AS_PLACED']]) {
+      const select = document.getElementById(id);
+      select.value = value;
+      select.dispatchEvent(new Event('change'));
+    }
+  })()`);
+  const mapped = await stillFrame((f) => Number(f.number) > Number(moved.number) && f.search && Number(f.search.searched) > 0 &&
+    Number(f.search.maxSteps) <= 2 && Number(f.search.coldStarts || 0) === 0);
+  const mappedShot = await screenshot('browser-explosion-map.png');
+  check('the explosion-map controls switch the server to map look-ups', greyDeviation(mappedShot) > 10,
+    `${mapped.search.searched} vertices, max ${mapped.search.maxSteps} look-ups; status: ${await evaluate("document.getElementById('status').textContent")}`);
   const latency = await evaluate('window.specula.latencyMs');
   check('input-to-frame latency is measured', typeof latency === 'number' && latency > 0, String(latency));
 } catch (error) {

@@ -187,8 +187,7 @@ int runRender(std::span<const std::string> arguments) {
   auto settings = parseReflectionOptions(options);
   if (!settings) return fail(settings.error());
   if (method == "explosion-map") {
-    if (options.text("search") != passes::searchStrategyName(passes::SearchStrategy::Crosshair) &&
-        settings->search != passes::SearchStrategy::ExplosionMap)
+    if (options.has("search") && settings->search != passes::SearchStrategy::ExplosionMap)
       return fail("--method explosion-map places vertices by the maps; it cannot take --search " + options.text("search"));
     settings->search = passes::SearchStrategy::ExplosionMap;
     if (!options.has("virtual-pixels")) settings->virtualPixels = passes::VirtualPixels::AsPlaced;  // the paper's whole method

@@ -74,8 +74,8 @@ int runServe(std::span<const std::string> arguments) {
   auto maxFps = options.number("max-fps");
   auto maxSize = options.size("max-size", 16384);
   auto tessellation = parseTessellationOptions(options);
-  passes::ReflectionSettings searchDefaults;
-  const Status search = parseSearchOptions(options, searchDefaults);
+  passes::ReflectionSettings sessionReflection;  // every session starts with these
+  const Status search = parseSearchOptions(options, sessionReflection);
   for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
                                renderThreads ? Status{} : Error{renderThreads.error()},
                                encodeThreads ? Status{} : Error{encodeThreads.error()},
@@ -115,10 +115,8 @@ int runServe(std::span<const std::string> arguments) {
   config.hub.maxHeight = maxSize->second;
   config.hub.stillDelay = std::chrono::milliseconds(*stillDelay);
   config.hub.maxFps = *maxFps;
+  config.hub.defaults.reflection = sessionReflection;
   config.hub.defaults.reflection.tessellation = *tessellation;
-  config.hub.defaults.reflection.search = searchDefaults.search;
-  config.hub.defaults.reflection.explosionMapSize = searchDefaults.explosionMapSize;
-  config.hub.defaults.reflection.explosionRefine = searchDefaults.explosionRefine;
   config.hub.scheduler = {*renderThreads, *encodeThreads};
   config.server = serverOptions;
   auto service = Service::start(std::move(config));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,8 +29,8 @@ inline passes::ReflectionSettings virtualObjects(passes::ReflectionSettings sett
 // Every way of finding reflection points, for tests that hold each to the same bounds: both searches,
 // and the explosion map refined by the crosshair search (the map's look-ups alone have their own,
 // wider bounds: tests/gl/ExplosionMapTest.cpp).
-inline const std::vector<passes::SearchStrategy> kSearchStrategies{passes::kSearchStrategies[0], passes::kSearchStrategies[1],
-                                                                   passes::kSearchStrategies[2]};
+inline const std::vector<passes::SearchStrategy> kSearchStrategies(std::begin(passes::kSearchStrategies),
+                                                                   std::end(passes::kSearchStrategies));
 
 inline passes::ReflectionSettings withSearch(passes::SearchStrategy search, passes::ReflectionSettings settings = virtualObjects()) {
   settings.search = search;

@@ -111,6 +111,21 @@ double greyDeviation(const v1::Frame& frame) {
   return std::sqrt(std::max(0.0, squares / static_cast<double>(grey.size()) - mean * mean));
 }
 
+// A client of the server on `port` that has said hello with a `width` × `height` viewport; null (and a
+// failed expectation) when it could not.
+std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, net::Encoding encoding, std::uint32_t width,
+                                                     std::uint32_t height) {
+  auto client = client::SpeculaClient::connect({"127.0.0.1", port, ""}, encoding, 5s);
+  EXPECT_TRUE(client) << client.error();
+  if (!client) return nullptr;
+  v1::ClientMessage hello;
+  hello.mutable_hello()->set_protocol_version(1);
+  hello.mutable_hello()->set_width(width);
+  hello.mutable_hello()->set_height(height);
+  EXPECT_TRUE((*client)->send(hello).ok());
+  return std::move(*client);
+}
+
 TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWithinASecond) {
   Process server({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad"});
   const std::smatch listening = server.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
@@ -119,16 +134,11 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
 
   std::vector<std::unique_ptr<client::SpeculaClient>> clients;
   for (net::Encoding encoding : {net::Encoding::Proto, net::Encoding::Json}) {
-    auto client = client::SpeculaClient::connect({"127.0.0.1", port, ""}, encoding, 5s);
-    ASSERT_TRUE(client) << client.error();
-    v1::ClientMessage hello;
-    hello.mutable_hello()->set_protocol_version(1);
-    hello.mutable_hello()->set_width(160);
-    hello.mutable_hello()->set_height(120);
-    ASSERT_TRUE((*client)->send(hello).ok());
+    auto client = greetedClient(port, encoding, 160, 120);
+    ASSERT_TRUE(client);
     std::optional<v1::Frame> frame;
     for (int i = 0; i < 10 && !frame; ++i) {
-      auto message = (*client)->receive(60s);
+      auto message = client->receive(60s);
       ASSERT_TRUE(message) << message.error() << "\n" << server.output();
       if (message->has_frame()) frame = message->frame();
     }
@@ -141,7 +151,7 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
     EXPECT_EQ(frame->plan(0).searched_objects(), 1u) << "the plan per mirror part travels with the frame";
     EXPECT_EQ(frame->plan(0).method(), "ray-cast") << "the sphere covers few of 160x120 pixels";
     EXPECT_EQ(frame->search().searched(), 0u) << "a ray-cast mirror searches nothing";
-    clients.push_back(std::move(*client));
+    clients.push_back(std::move(client));
   }
 
   const auto start = std::chrono::steady_clock::now();
@@ -153,6 +163,26 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
   }
   EXPECT_LT(std::chrono::steady_clock::now() - start, 1s);
   EXPECT_EQ(server.waitExit(5s), 0) << server.output();
+}
+
+// Every search option `serve --help` lists as a sessions' default reaches a new session.
+TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
+  Process server({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine",
+                  "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed"});
+  const std::smatch listening = server.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
+  ASSERT_FALSE(listening.empty()) << server.output();
+  auto client = greetedClient(static_cast<std::uint16_t>(std::stoi(listening[1])), net::Encoding::Proto, 64, 48);
+  ASSERT_TRUE(client);
+  std::optional<v1::Welcome> welcome;
+  for (int i = 0; i < 10 && !welcome; ++i) {
+    auto message = client->receive(60s);
+    ASSERT_TRUE(message) << message.error() << "\n" << server.output();
+    if (message->has_welcome()) welcome = message->welcome();
+  }
+  ASSERT_TRUE(welcome);
+  EXPECT_EQ(welcome->settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
+  EXPECT_EQ(welcome->settings().explosion_map_size(), 128u);
+  EXPECT_EQ(welcome->settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
 }
 
 TEST(ServeProcess, RefusesANonLoopbackBindWithoutAToken) {

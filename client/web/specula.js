@@ -221,12 +221,12 @@
     if (!(threshold > 0)) { showStatus('threshold must be a positive number'); return; }
     send({ settings: {
       method: $('method').value, search: $('search').value, explosionMapSize: Number($('explosionMapSize').value),
-      virtualPixels: $('virtualPixels').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
+      virtualPixels: $('virtualPixels').value, extrusions: $('extrusions').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
       threshold, level: level === 0 ? -1 : level,
       jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value), ...nextInput(),
     } });
   }
-  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
+  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'extrusions', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
     $(id).addEventListener('change', sendSettings);
 
   function showSettings(settings) {
@@ -235,6 +235,7 @@
     set('search', settings.search);
     set('explosionMapSize', settings.explosionMapSize);
     set('virtualPixels', settings.virtualPixels);
+    set('extrusions', settings.extrusions);
     set('plan', settings.plan);
     set('tessellation', settings.tessellation);
     set('metric', settings.metric);

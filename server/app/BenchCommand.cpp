@@ -41,12 +41,12 @@ CommandLine benchOptions() {
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
       "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
-      "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] "
+      "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
       "frame-to-frame coherence and from a cold start, reflection-point error in pixels against the exact\n"
-      "sphere solver (scenes with an analytic sphere mirror, where it searches), and the last frame against\n"
+      "solvers (scenes with an analytic sphere or extrusion mirror, where it searches), and the last frame against\n"
       "the ray-traced reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is\n"
       "the last pose drawn with no reflection (--method none): the scene's own raster, below which no method\n"
       "can go. --plan everything turns the frame planner off (no culling, no ray-cast mirrors) for comparison.\n"
@@ -169,9 +169,11 @@ CommandLine accuracyBenchOptions() {
       "What each step of accuracy costs in time on one scene. Renders a camera path (the camera swings\n"
       "around its target while the scene animates) with every method and setting: the environment-map\n"
       "baseline, the search without tessellation, adaptive pixel and angle thresholds, full levels 1-4,\n"
-      "the G-buffer at half and double resolution and in RGBA16F; and ray-traces each pose once as the\n"
-      "reference. Per setting: median frame time; mean PSNR, SSIM and mirror mismatch against the\n"
-      "reference; reflection-point error (p99, max px) for analytic sphere mirrors; vertices drawn and\n"
+      "the G-buffer at half and double resolution and in RGBA16F, the ray-hierarchy search, the explosion\n"
+      "map (three sizes, the paper's placement, refined), every mirror ray-cast; on a scene with an\n"
+      "extrusion mirror every row searches its mesh and one more solves it in 2-D. Ray-traces each pose\n"
+      "once as the reference. Per setting: median frame time; mean PSNR, SSIM and mirror mismatch against the\n"
+      "reference; reflection-point error (p99, max px) for sphere and extrusion mirrors; vertices drawn and\n"
       "searches per frame. Writes DIR/accuracy.csv, .json, .md (a Markdown table), .gp (a gnuplot\n"
       "script, data inline) and the plot it draws, DIR/accuracy.png and .svg: mirror mismatch against\n"
       "frame time with the Pareto front marked.",

@@ -70,6 +70,10 @@ std::vector<OptionSpec> searchOptions() {
        "exact-hit (a virtual triangle's pixels cast their reflected rays at its object triangle) | as-placed (shaded "
        "where the triangle lies, as the papers draw; the default with --method explosion-map)",
        "exact-hit"},
+      {"extrusions", "HOW",
+       "mirrors declared as extrusions (cylinders): solve (Ofek & Rappoport's exact 2-D reduction, no search) | search "
+       "(their meshes with --search, like any mirror)",
+       "solve"},
   };
 }
 
@@ -92,6 +96,10 @@ Status parseSearchOptions(const CommandLine& options, passes::ReflectionSettings
   if (pixels == "exact-hit") settings.virtualPixels = passes::VirtualPixels::ExactHit;
   else if (pixels == "as-placed") settings.virtualPixels = passes::VirtualPixels::AsPlaced;
   else return Error{"--virtual-pixels expects exact-hit or as-placed, got '" + pixels + "'"};
+  const std::string extrusions = options.text("extrusions");
+  if (extrusions != "solve" && extrusions != "search")
+    return Error{"--extrusions expects solve or search, got '" + extrusions + "'"};
+  settings.solveExtrusions = extrusions == "solve";
   return {};
 }
 

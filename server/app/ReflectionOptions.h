@@ -15,7 +15,8 @@ std::vector<OptionSpec> tessellationOptions();
 // Reads them, or says which value is wrong and what it accepts.
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options);
 
-// --search (crosshair, hierarchy or explosion-map), --explosion-map-size and --explosion-refine.
+// --search (crosshair, hierarchy or explosion-map), the explosion map's size, refinement and placement,
+// --virtual-pixels, and --extrusions (solve or search the mirrors declared as extrusions).
 std::vector<OptionSpec> searchOptions();
 
 // Reads them into `settings`, or says which value is wrong and what it accepts.

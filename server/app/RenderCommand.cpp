@@ -39,7 +39,7 @@ CommandLine renderOptions() {
   specs.push_back(glOption());
   return CommandLine(
       "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] "
+      "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
@@ -132,6 +132,12 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
       std::snprintf(line, sizeof line, ", %u in no cone until enlarged, %u in none even then", search.enlarged, search.inNoCone);
       text += line;
     }
+    const auto extrusions = std::ranges::count_if(
+        frame.drawnMirrors, [&](std::size_t m) { return scene.objects[m].mirror && scene.objects[m].mirror->extrusion; });
+    if (extrusions > 0)
+      text += settings.solveExtrusions ? "; extrusion mirrors (" + std::to_string(extrusions) +
+                                             ") solved by the 2-D reduction, 0 steps each"
+                                       : "; extrusion mirrors (" + std::to_string(extrusions) + ") searched (--extrusions search)";
     text += "\n";
   }
   for (const render::MirrorPlanSummary& mirror : frame.plan) {

@@ -148,6 +148,13 @@ std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
   if (std::any_of(scene.objects.begin(), scene.objects.end(), approximatesAnExactShape))
     for (const glm::ivec2 mesh : {glm::ivec2(32, 16), glm::ivec2(64, 32), glm::ivec2(128, 64), glm::ivec2(256, 128)})
       sweep.push_back({"mesh " + std::to_string(mesh.x) + "x" + std::to_string(mesh.y), "mesh", {}, mesh});
+  // A scene with a mirror declared as an extrusion: every row above searches its mesh (the general
+  // path), and one solves it exactly by Ofek & Rappoport's 2-D reduction instead.
+  if (std::any_of(scene.objects.begin(), scene.objects.end(),
+                  [](const scene::SceneObject& object) { return object.mirror && object.mirror->extrusion; })) {
+    for (AccuracySetting& setting : sweep) setting.settings.solveExtrusions = false;
+    sweep.push_back({"extrusion solved in 2-D", "extrusion", {}});
+  }
   // Every row above measures the search, whatever the mirror's size on screen; the last casts every
   // mirror pixel's reflected ray instead (what the planner picks where it predicts that cheaper).
   for (AccuracySetting& setting : sweep) setting.settings.rayCast = passes::RayCastRule::Never;
@@ -188,7 +195,7 @@ Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene:
                                    const std::vector<reference::ReferenceImage>& truths, const AccuracyBenchOptions& options,
                                    const AccuracySetting& setting) {
   const ReflectionMethod method = setting.settings.method;
-  const bool measurePoints = hasAnalyticSphereMirror(r.scene()) && method == ReflectionMethod::Search;
+  const bool measurePoints = hasExactMirror(r.scene()) && method == ReflectionMethod::Search;
   // Warm-up at the first pose: buffer sizes, shader caches, coherence seeds.
   if (auto warm = r.render(path.front(), options.width, options.height, setting.settings); !warm)
     return Error{setting.name + ": " + warm.error()};

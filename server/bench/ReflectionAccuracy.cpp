@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
+#include <variant>
 
+#include "math/ExtrusionReflection.h"
 #include "math/SphereReflection.h"
 
 namespace specula::bench {
@@ -15,12 +18,64 @@ bool isAnalyticSphere(const scene::SceneObject& object) {
   return object.mirror && object.mirror->analytic && object.mirror->analytic->kind == scene::AnalyticShape::Kind::Sphere;
 }
 
-// The mirror's sphere in world space; nullopt when its transform does not keep it a sphere.
-std::optional<math::Sphere> worldSphere(const scene::AnalyticShape& shape, const glm::mat4& objectToWorld) {
+bool hasExactShape(const scene::SceneObject& object) {
+  return isAnalyticSphere(object) || (object.mirror && object.mirror->extrusion);
+}
+
+// The exact answer for one mirror in world space: its analytic sphere or its declared extrusion.
+struct ExactMirror {
+  std::variant<math::Sphere, math::Extrusion> shape;
+  // An extrusion is unbounded; the mirror spans these heights along it (its mesh's): a reflection
+  // point beyond them lies on no mirror, so whatever the search made of it is not judged.
+  glm::dvec2 heights{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+
+  // On or inside the surface (a tessellated edge through it, an object's float vertex resting on
+  // it): no reflection to judge.
+  bool encloses(const glm::dvec3& point) const {
+    constexpr double kOnSurface = 1.0 + 1e-5;  // of the radius: float rounding of a vertex placed on it
+    if (const auto* sphere = std::get_if<math::Sphere>(&shape))
+      return glm::length(point - sphere->center) <= kOnSurface * sphere->radius;
+    const auto& extrusion = std::get<math::Extrusion>(shape);
+    const glm::dvec3 offset = point - extrusion.axisPoint;
+    return glm::length(glm::dvec2(glm::dot(offset, extrusion.u), glm::dot(offset, extrusion.v)) / extrusion.radii) <= kOnSurface;
+  }
+
+  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex) const {
+    if (const auto* sphere = std::get_if<math::Sphere>(&shape)) {
+      const auto point = math::sphereReflectionPoint(*sphere, eye, vertex);
+      if (!point) return std::nullopt;
+      return math::SurfacePoint{*point, glm::normalize(*point - sphere->center), 0.0};
+    }
+    return math::extrusionReflectionPoint(std::get<math::Extrusion>(shape), eye, vertex);
+  }
+
+  bool beyondTheMirror(const glm::dvec3& point) const {
+    const auto* extrusion = std::get_if<math::Extrusion>(&shape);
+    if (!extrusion) return false;
+    const double height = glm::dot(point - extrusion->axisPoint, extrusion->direction);
+    return height < heights.x || height > heights.y;
+  }
+};
+
+// The mirror's exact shape in world space; nullopt when its transform does not keep a sphere one.
+std::optional<ExactMirror> worldShape(const scene::MirrorInfo& mirror, const scene::Mesh& mesh, const glm::mat4& objectToWorld) {
+  if (mirror.extrusion) {
+    const auto extrusion = mirror.extrusion->transformed(glm::dmat4(objectToWorld));
+    if (!extrusion) return std::nullopt;
+    ExactMirror exact{*extrusion};
+    exact.heights = glm::dvec2(std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+    for (const scene::Vertex& v : mesh.vertices) {
+      const glm::dvec3 world(objectToWorld * glm::vec4(v.position, 1.0f));
+      const double height = glm::dot(world - extrusion->axisPoint, extrusion->direction);
+      exact.heights = {std::min(exact.heights.x, height), std::max(exact.heights.y, height)};
+    }
+    return exact;
+  }
+  const scene::AnalyticShape& shape = *mirror.analytic;
   const glm::dvec3 scale(glm::length(glm::vec3(objectToWorld[0])), glm::length(glm::vec3(objectToWorld[1])),
                          glm::length(glm::vec3(objectToWorld[2])));
   if (std::abs(scale.x - scale.y) > 1e-5 * scale.x || std::abs(scale.x - scale.z) > 1e-5 * scale.x) return std::nullopt;
-  return math::Sphere{glm::dvec3(objectToWorld * glm::vec4(shape.center, 1.0f)), shape.radii.x * scale.x};
+  return ExactMirror{math::Sphere{glm::dvec3(objectToWorld * glm::vec4(shape.center, 1.0f)), shape.radii.x * scale.x}};
 }
 
 }  // namespace
@@ -43,23 +98,22 @@ double ReflectionPointErrors::mean() const {
   return pixels.empty() ? 0.0 : std::accumulate(pixels.begin(), pixels.end(), 0.0) / static_cast<double>(pixels.size());
 }
 
-bool hasAnalyticSphereMirror(const scene::Scene& scene) {
-  return std::any_of(scene.objects.begin(), scene.objects.end(), isAnalyticSphere);
-}
+bool hasExactMirror(const scene::Scene& scene) { return std::any_of(scene.objects.begin(), scene.objects.end(), hasExactShape); }
 
 namespace {
 
-// Judges one search result against the exact sphere solver and adds it to `errors`.
-void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const math::Sphere& sphere, const glm::dvec3& eye,
+// Judges one search result against the exact solver and adds it to `errors`.
+void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const ExactMirror& mirror, const glm::dvec3& eye,
            const glm::dvec3& vertex, const glm::vec3& reflectionPoint, int flags, std::size_t slot, double marginPixels) {
-  // A point on or inside the mirror (a tessellated edge through it) has no reflection to judge.
-  if (glm::length(vertex - sphere.center) <= sphere.radius) return;
-  const auto exact = math::sphereReflectionPoint(sphere, eye, vertex);
+  if (mirror.encloses(vertex)) return;
+  const std::optional<math::SurfacePoint> solved = mirror.reflection(eye, vertex);
+  const std::optional<glm::dvec3> exact = solved ? std::optional(solved->position) : std::nullopt;
   const bool searchVisible = (flags & (passes::ReflectedVertex::kHidden | passes::ReflectedVertex::kUnsolved)) == 0;
   if (!exact) {
     errors.exactHiddenButSearchVisible += searchVisible;
     return;
   }
+  if (mirror.beyondTheMirror(*exact)) return;
   if ((frame.view.worldToClip() * glm::vec4(glm::vec3(*exact), 1.0f)).w <= 0.0f) return;  // behind the eye
   const glm::dvec2 exactPixel = toPixels(frame.view, glm::vec3(*exact), frame.width, frame.height);
   if (exactPixel.x < -marginPixels || exactPixel.y < -marginPixels || exactPixel.x > frame.width + marginPixels ||
@@ -67,7 +121,7 @@ void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, co
     return;
   if (!searchVisible) {
     errors.searchHiddenButExactVisible++;
-    const double grazing = glm::dot(glm::normalize(eye - *exact), glm::normalize(*exact - sphere.center));
+    const double grazing = glm::dot(glm::normalize(eye - *exact), solved->normal);
     errors.searchHiddenNearSilhouette += grazing < ReflectionPointErrors::kNearSilhouetteCosine;
     return;
   }
@@ -76,14 +130,14 @@ void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, co
   errors.vertices.push_back({slot, exactPixel, offset});
 }
 
-// The world sphere of a mirror drawn this frame with an analytic sphere; nullopt otherwise.
-std::optional<math::Sphere> measuredSphere(const scene::Scene& scene, const scene::ScenePose& pose,
+// The world shape of a mirror drawn this frame with an analytic sphere or an extrusion; nullopt otherwise.
+std::optional<ExactMirror> measuredShape(const scene::Scene& scene, const scene::ScenePose& pose,
                                            const render::RenderedFrame& frame, std::size_t mirror) {
   // Mirrors not drawn this frame still hold an older frame's results.
   if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror) == frame.drawnMirrors.end()) return std::nullopt;
   const scene::SceneObject& mirrorObject = scene.objects[mirror];
-  if (!isAnalyticSphere(mirrorObject)) return std::nullopt;
-  return worldSphere(*mirrorObject.mirror->analytic, pose.objectToWorld[mirror]);
+  if (!hasExactShape(mirrorObject)) return std::nullopt;
+  return worldShape(*mirrorObject.mirror, scene.meshes[mirrorObject.mesh], pose.objectToWorld[mirror]);
 }
 
 }  // namespace
@@ -95,14 +149,14 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
   const scene::Scene& scene = renderer.scene();
   const glm::dvec3 eye(pose.camera.eye);
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
-    const auto sphere = measuredSphere(scene, pose, frame, mirror.mirrorObject);
-    if (!sphere) continue;
+    const auto shape = measuredShape(scene, pose, frame, mirror.mirrorObject);
+    if (!shape) continue;
     for (const passes::ReflectionSlotRange& range : mirror.reflected) {
       const scene::Mesh& mesh = scene.meshes[scene.objects[range.object].mesh];
       for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
         const std::size_t slot = range.firstSlot + v;
         const glm::dvec3 vertex(pose.objectToWorld[range.object] * glm::vec4(mesh.vertices[v].position, 1.0f));
-        judge(errors, frame, *sphere, eye, vertex, glm::vec3(results[slot].reflectionPoint), results[slot].state.w, slot,
+        judge(errors, frame, *shape, eye, vertex, glm::vec3(results[slot].reflectionPoint), results[slot].state.w, slot,
               marginPixels);
       }
     }
@@ -116,10 +170,10 @@ ReflectionPointErrors measureTessellatedPoints(const render::Renderer& renderer,
   const glm::dvec3 eye(pose.camera.eye);
   const std::vector<passes::FinishedVertex> finished = renderer.readTessellatedVertices();
   for (std::size_t i = 0; i < finished.size(); ++i) {
-    const auto sphere = measuredSphere(renderer.scene(), pose, frame, finished[i].mirrorObject);
-    if (!sphere) continue;
+    const auto shape = measuredShape(renderer.scene(), pose, frame, finished[i].mirrorObject);
+    if (!shape) continue;
     const passes::TessellatedVertex& record = finished[i].record;
-    judge(errors, frame, *sphere, eye, glm::dvec3(record.positionU), glm::vec3(record.reflectionTexelX),
+    judge(errors, frame, *shape, eye, glm::dvec3(record.positionU), glm::vec3(record.reflectionTexelX),
           static_cast<int>(record.virtualFlags.w), i, marginPixels);
   }
   return errors;

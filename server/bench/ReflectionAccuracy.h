@@ -1,5 +1,6 @@
 #pragma once
-// The search's reflection points against the exact sphere solver (server/math), in screen pixels.
+// The search's reflection points against the exact solvers (server/math: spheres and extrusions), in
+// screen pixels.
 #include <cstddef>
 #include <vector>
 
@@ -27,7 +28,7 @@ struct ReflectionPointErrors {
   int exactHiddenButSearchVisible = 0;  // reflected although no reflection point exists
   int searchHiddenButExactVisible = 0;  // dropped although its reflection is visible
   // Of the latter, those whose exact reflection point is within kNearSilhouetteCosine of grazing:
-  // where a mesh's polygonal outline and the sphere's disagree.
+  // where a mesh's polygonal outline and the exact shape's disagree.
   int searchHiddenNearSilhouette = 0;
   static constexpr double kNearSilhouetteCosine = 0.1;  // the eye sees the point within ~6° of grazing
 
@@ -37,8 +38,8 @@ struct ReflectionPointErrors {
 };
 
 // Compares the last frame's search results (a GPU readback) with the exact reflection point on
-// every mirror with an analytic sphere, for every vertex whose exact reflection point lies inside
-// the frame (plus `marginPixels`). Mirrors without an analytic sphere are skipped.
+// every mirror with an exact shape (an analytic sphere or a declared extrusion), for every vertex
+// whose exact reflection point lies inside the frame (plus `marginPixels`). Other mirrors are skipped.
 ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
                                               const render::RenderedFrame& frame, double marginPixels = 0.0);
 
@@ -48,6 +49,6 @@ ReflectionPointErrors measureTessellatedPoints(const render::Renderer& renderer,
                                                const render::RenderedFrame& frame, double marginPixels = 0.0);
 
 // True when the scene has a mirror measureReflectionPoints can measure.
-bool hasAnalyticSphereMirror(const scene::Scene& scene);
+bool hasExactMirror(const scene::Scene& scene);
 
 }  // namespace specula::bench

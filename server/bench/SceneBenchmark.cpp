@@ -143,7 +143,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   coldSteps.add(cold->search);
   result.coldSteps = coldSteps.result();
 
-  const bool measurePoints = hasAnalyticSphereMirror(*scene);
+  const bool measurePoints = hasExactMirror(*scene);
   ReflectionPointErrors pointErrors;
   const auto addPointErrors = [&](const render::RenderedFrame& frame) {
     if (!measurePoints || frame.search.searched == 0) return;  // nothing searched: every mirror ray-cast

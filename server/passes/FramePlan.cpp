@@ -224,7 +224,12 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   // Searching (and so its pyramid or ray hierarchy, and tessellation) only for parts drawn as virtual objects.
   plan.search = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
                             [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
-  if (plan.search)
+  // A solved extrusion needs no pyramid, hierarchy or maps: only the search pass, which solves it.
+  const bool strategyNeeded = std::any_of(plan.mirrors.begin(), plan.mirrors.end(), [&](const PlannedMirror& mirror) {
+    return mirror.method == PartMethod::VirtualObjects && !(settings.solveExtrusions && mirror.slots->extrusion);
+  });
+  if (plan.search && !strategyNeeded) plan.passes.push_back("search");
+  if (strategyNeeded)
     switch (settings.search) {
       case SearchStrategy::Crosshair: plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"}); break;
       case SearchStrategy::Hierarchy: plan.passes.insert(plan.passes.end(), {"ray-hierarchy", "search"}); break;

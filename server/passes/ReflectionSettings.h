@@ -115,6 +115,10 @@ struct ReflectionSettings {
   // of on the eye's ray through the reflection point they give.
   bool explosionMirrorPlacement = false;
   VirtualPixels virtualPixels = VirtualPixels::ExactHit;
+  // Mirrors declared as linear extrusions (a cylinder: scene::MirrorInfo::extrusion) have their
+  // reflection points solved by Ofek & Rappoport's 2-D reduction, exactly and with no search; off
+  // searches their meshes with `search` like any mirror (the extrusion then only measures them).
+  bool solveExtrusions = true;
   // Start each vertex's search at last frame's texel; off forces cold starts (benchmarks, jumps).
   bool coherence = true;
   int maxWalkSteps = 64;  // bound on 3×3 windows per climb

@@ -44,7 +44,8 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
                        : MirrorReach::ofMeshPart(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], parts, p,
                                                  parts.cannotSeeItself(info.closed));
       MirrorSlots mirror{m, static_cast<int>(slots.mirrors.size()), stencil, static_cast<int>(p),
-                         static_cast<int>(parts.parts.size()), parts.parts[p].kind, seesItself, reach, {}};
+                         static_cast<int>(parts.parts.size()), parts.parts[p].kind, seesItself, reach, {},
+                         info.extrusion.has_value()};
       for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         if (o == m || !scene.objects[o].reflected) continue;
         const scene::Mesh& mesh = scene.meshes[scene.objects[o].mesh];

@@ -29,6 +29,9 @@ struct MirrorSlots {
   bool seesItself = false;       // reflected rays may meet this mirror again: its own mesh is ray-cast
   MirrorReach reach;             // where its reflected rays can go (object space): the plan culls with it
   std::vector<ReflectionSlotRange> reflected;
+  // Declared a linear extrusion (scene::MirrorInfo::extrusion): the search can solve it exactly and
+  // then needs none of a strategy's structures (ReflectionSettings::solveExtrusions).
+  bool extrusion = false;
 };
 
 struct ReflectionSlots {

@@ -67,7 +67,9 @@ void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame
   program.set("coldCandidates", closedConvex ? kConvexColdCandidates : kColdCandidates);
   program.set("coarseLevel", level);
   program.set("coarseRect", glm::ivec4(covered.low >> level, ((covered.high - 1) >> level) + 1));
-  setMirrorQuadric(program, *frame.scene.objects[mirror.mirrorObject].mirror, frame.pose.objectToWorld[mirror.mirrorObject]);
+  const scene::MirrorInfo& info = *frame.scene.objects[mirror.mirrorObject].mirror;
+  setMirrorQuadric(program, info, frame.pose.objectToWorld[mirror.mirrorObject]);
+  setMirrorExtrusion(program, info, frame.pose.objectToWorld[mirror.mirrorObject], frame.settings.solveExtrusions);
   if (frame.settings.search == SearchStrategy::ExplosionMap) setExplosionMapFrame(program, frame, mirror);
 }
 

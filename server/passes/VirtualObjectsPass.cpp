@@ -212,7 +212,9 @@ void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::Sha
   program.set("worldToObject", glm::inverse(objectToWorld));
   program.set("normalToWorld", math::normalMatrix(objectToWorld));
   program.set("worldToClip", frame.view.worldToClip(glm::vec2(1.0f), kVirtualFarScale));
-  program.set("minDistance", bvh.minDistance);
+  // Only a mirror that shows itself starts its rays on the object cast against; any other object is
+  // hit from distance 0, so one the mirror stands on (a cylinder on the floor) meets it at the contact.
+  program.set("minDistance", objectIndex == mirror.mirrorObject ? bvh.minDistance : 0.0f);
   program.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
   setSceneLighting(program, frame.scene);
   setMaterial(program, frame.scene.materials[object.material]);

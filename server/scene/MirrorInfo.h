@@ -3,6 +3,8 @@
 #include <glm/glm.hpp>
 #include <optional>
 
+#include "math/ExtrusionReflection.h"
+
 namespace specula::scene {
 
 // How the renderer treats a mesh mirror (scene::MirrorParts): convex or concave declares it one part
@@ -27,6 +29,10 @@ struct MirrorInfo {
   bool closed = true;
   std::optional<std::uint32_t> closedTwinMesh;  // index into Scene::meshes; set exactly when !closed
   std::optional<AnalyticShape> analytic;
+  // A convex mirror that is a linear extrusion of an ellipse (a cylinder), in object space: the mesh
+  // is its surface; the search may solve its reflection points exactly by Ofek & Rappoport's 2-D
+  // reduction (ReflectionSettings::solveExtrusions), and reflection-point errors are measured against it.
+  std::optional<math::Extrusion> extrusion;
 
   // Whether renderer and ray tracer use the analytic quadric as the surface: a closed mirror whose
   // shape says so (an open one's quadric would cover where its mesh has no surface).

@@ -72,6 +72,16 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
                                  !glm::all(glm::greaterThan(o.mirror->analytic->radii, glm::vec3(0.0f))) ||
                                  !finite(o.mirror->analytic->radii)))
         return where + "analytic shape needs a finite centre and positive radii";
+      if (const auto& e = o.mirror->extrusion) {
+        const bool orthonormal = std::abs(glm::dot(e->u, e->v)) < 1e-6 && std::abs(glm::dot(e->u, e->direction)) < 1e-6 &&
+                                 std::abs(glm::dot(e->v, e->direction)) < 1e-6 && std::abs(glm::length(e->u) - 1.0) < 1e-6 &&
+                                 std::abs(glm::length(e->v) - 1.0) < 1e-6 && std::abs(glm::length(e->direction) - 1.0) < 1e-6;
+        if (!finite(glm::vec3(e->axisPoint)) || !orthonormal || !(e->radii.x > 0.0 && e->radii.y > 0.0) ||
+            !finite(glm::vec3(e->radii, 0.0)))
+          return where + "extrusion needs a finite axis point, an orthonormal frame and positive radii";
+        if (o.mirror->analytic) return where + "a mirror is an analytic quadric or an extrusion, not both";
+        if (o.mirror->curvature != MirrorCurvature::Convex) return where + "an extrusion mirror must be convex";
+      }
     }
   }
   if (scene.lights.size() > kMaxLights) return "more than " + std::to_string(kMaxLights) + " lights";

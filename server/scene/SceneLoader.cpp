@@ -250,8 +250,28 @@ AnalyticShape readAnalyticShape(const JsonNode& node) {
   return shape;
 }
 
+// {"direction": [x, y, z], "axis_point": [x, y, z], "circle": radius} or "ellipse": [a, b] (semi-axes
+// along u and v of math::Extrusion::along).
+math::Extrusion readExtrusion(const JsonNode& node) {
+  node.expectObject({"axis_point", "direction", "circle", "ellipse"});
+  const std::string_view profile = node.oneOf({"circle", "ellipse"});
+  glm::dvec2 radii;
+  if (profile == "circle") {
+    radii = glm::dvec2(node.at("circle").positive());
+  } else {
+    const JsonNode ellipse = node.at("ellipse");
+    radii = glm::dvec2(ellipse.vec2());
+    if (!(radii.x > 0.0 && radii.y > 0.0)) ellipse.fail("semi-axes must both be greater than 0");
+  }
+  const JsonNode direction = node.at("direction");
+  const glm::dvec3 along(direction.vec3());
+  if (!(glm::length(along) > 1e-6)) direction.fail("the extrusion direction must not be zero");
+  const auto axisPoint = node.find("axis_point");
+  return math::Extrusion::along(axisPoint ? glm::dvec3(axisPoint->vec3()) : glm::dvec3(0.0), along, radii);
+}
+
 MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
-  node.expectObject({"curvature", "closed", "closed_twin", "analytic"});
+  node.expectObject({"curvature", "closed", "closed_twin", "analytic", "extrusion"});
   MirrorInfo mirror;
   // Mixed (the default) lets the renderer split the mesh by its curvature (scene::MirrorParts).
   mirror.curvature = MirrorCurvature::Mixed;
@@ -273,6 +293,15 @@ MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
   if (mirror.closed && twin) twin->fail("only an open mirror takes a closed twin; drop it or set \"closed\": false");
   if (twin) mirror.closedTwinMesh = meshes.find(*twin);
   if (const auto analytic = node.find("analytic")) mirror.analytic = readAnalyticShape(*analytic);
+  if (const auto extrusion = node.find("extrusion")) {
+    if (mirror.analytic) extrusion->fail("a mirror is an analytic quadric or an extrusion, not both: keep one");
+    // The 2-D reduction holds on the outside of a convex profile.
+    const std::optional<JsonNode> curvature = node.find("curvature");
+    if (curvature && mirror.curvature != MirrorCurvature::Convex)
+      curvature->fail("an extrusion mirror is convex (its profile is an ellipse); drop \"curvature\" or set it to \"convex\"");
+    mirror.curvature = MirrorCurvature::Convex;
+    mirror.extrusion = readExtrusion(*extrusion);
+  }
   return mirror;
 }
 

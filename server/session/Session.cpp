@@ -56,6 +56,7 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   }
   out.set_explosion_map_size(static_cast<std::uint32_t>(settings.reflection.explosionMapSize));
   out.set_virtual_pixels(settings.reflection.virtualPixels == passes::VirtualPixels::AsPlaced ? v1::PIXELS_AS_PLACED : v1::PIXELS_EXACT_HIT);
+  out.set_extrusions(settings.reflection.solveExtrusions ? v1::EXTRUSIONS_SOLVE : v1::EXTRUSIONS_SEARCH);
   return out;
 }
 
@@ -349,6 +350,12 @@ Status Session::applySettings(const v1::RenderSettings& update) {
     case v1::PIXELS_AS_PLACED: settings.reflection.virtualPixels = passes::VirtualPixels::AsPlaced; break;
     case v1::PIXELS_UNSPECIFIED: break;
     default: return Error{"settings: unknown virtual pixels"};
+  }
+  switch (update.extrusions()) {
+    case v1::EXTRUSIONS_SOLVE: settings.reflection.solveExtrusions = true; break;
+    case v1::EXTRUSIONS_SEARCH: settings.reflection.solveExtrusions = false; break;
+    case v1::EXTRUSIONS_UNSPECIFIED: break;
+    default: return Error{"settings: unknown extrusions"};
   }
   switch (update.metric()) {
     case v1::METRIC_PIXELS: t.metric = passes::TessellationMetric::Pixels; break;

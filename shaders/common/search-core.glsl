@@ -2,9 +2,11 @@
 // crosshair search (hill-climb N·B over the mirror's G-buffer in 3×3 windows from a seed texel when it
 // is on the mirror, else coarse-to-fine down the G-buffer pyramid) or by Szabo's (2013) ray
 // hierarchy; then refine below the texel. Or no search: Ofek & Rappoport's (1998) explosion-map
-// look-ups, optionally refined by the crosshair search from the point they give. Shared by the search
+// look-ups, optionally refined by the crosshair search from the point they give. Or, on a mirror
+// declared as a linear extrusion, their exact 2-D reduction (common/extrusion.glsl). Shared by the search
 // of scene vertices (search/search.comp) and of the vertices adaptive tessellation adds (tessellation/).
 #include "common/explosion-map.glsl"
+#include "common/extrusion.glsl"
 #include "common/quadric.glsl"
 #include "common/ray-hierarchy.glsl"
 #include "common/reflection.glsl"
@@ -497,19 +499,43 @@ ReflectedVertex explosionMapReflection(vec3 vertex) {
   return result;
 }
 
+// The exact reflection of `vertex` in an extrusion mirror: no search, no look-up (0 steps).
+ReflectedVertex solvedExtrusionReflection(vec3 vertex) {
+  ReflectedVertex result;
+  vec3 r, n;
+  bool hidden;
+  int flags = 0;
+  if (!extrusionReflection(eyePosition, vertex, r, n, hidden)) {
+    flags |= kReflectionUnsolved;
+    result.virtualPosition = vec4(0.0);
+  } else {
+    // Hidden vertices go across the silhouette's tangent plane, as on the other paths below.
+    if (hidden) flags |= kReflectionHidden;
+    result.virtualPosition = vec4(hidden ? mirrorAcrossPlane(r, n, vertex) : virtualVertex(eyePosition, r, vertex), 1.0);
+  }
+  vec3 atR = gbufferCoordinateOf(r);
+  result.reflectionPoint = vec4(r, 1.0);
+  result.reflectionNormal = vec4(n, 0.0);
+  result.state = ivec4(atR.z > 0.0 ? ivec2(floor(atR.xy)) : ivec2(-1), 0, flags);
+  return result;
+}
+
 // Finds the reflection of `vertex` (world space) in the mirror on G-buffer layer `layer`;
 // state.xy is the texel reached (the next search's seed), state.z the steps, state.w the flags.
 // `retryWhenLost`: if the refinement from a seeded climb is lost, search again from the pyramid
 // (seeds from last frame; this frame's seeds, as edge midpoints get, are never that stale).
 ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool retryWhenLost) {
   vertexWorld = vertex;
+  if (extrusion != 0) return solvedExtrusionReflection(vertex);
   int steps = 0, flags = 0;
   if (explosionMap != 0) {
     ReflectedVertex mapped = explosionMapReflection(vertex);
-    if (explosionRefine == 0 || (mapped.state.w & kReflectionUnsolved) != 0) return mapped;
+    if (explosionRefine == 0) return mapped;
     steps = mapped.state.z;  // the look-ups, then the climb's windows
+    // Where the maps have no answer (a vertex inside the near sphere, as an object resting on the
+    // mirror's foot is), the refinement starts cold from the pyramid, as the crosshair search would.
     seed = mapped.state.xy;
-    useSeed = true;
+    useSeed = (mapped.state.w & kReflectionUnsolved) == 0;
   }
   float value = kInvalid;
   ivec2 texel = seed;

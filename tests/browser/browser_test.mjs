@@ -198,7 +198,8 @@ try {
   // The explosion map from the browser's controls: the planner off (every mirror searched), the
   // maps' look-ups (at most two a vertex, none climbing) drawn where they place the triangles.
   await evaluate(`(() => {
-    for (const [id, value] of [['plan', 'PLAN_EVERYTHING'], ['search', 'SEARCH_EXPLOSION_MAP'], ['virtualPixels', 'PIXELS_AS_PLACED']]) {
+    for (const [id, value] of [['plan', 'PLAN_EVERYTHING'], ['search', 'SEARCH_EXPLOSION_MAP'], ['virtualPixels', 'PIXELS_AS_PLACED'],
+                               ['extrusions', 'EXTRUSIONS_SEARCH']]) {
       const select = document.getElementById(id);
       select.value = value;
       select.dispatchEvent(new Event('change'));

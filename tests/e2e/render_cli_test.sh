@@ -41,6 +41,11 @@ check "--explosion-refine on climbs from the map's point, with the pyramid for c
 fails_with "--method explosion-map refuses another search" "--method explosion-map places vertices by the maps; it cannot take --search hierarchy" render --method explosion-map --search hierarchy
 fails_with "a map size past the bound is refused" "--explosion-map-size" render --explosion-map-size 8
 fails_with "an unknown placement is refused" "--explosion-placement expects eye-ray or mirror, got 'plane'" render --explosion-placement plane
+output=$("$specula" render --scene cylinder --size 160x120 --ray-cast never --out "$work/cyl.png" 2>&1)
+check "a declared extrusion is solved in 2-D: no pyramid, no steps" bash -c "! grep -q gbuffer-pyramid <<<\"\$0\" && grep -q 'steps mean 0.00 max 0' <<<\"\$0\" && grep -q 'extrusion mirrors (1) solved by the 2-D reduction' <<<\"\$0\"" "$output"
+output=$("$specula" render --scene cylinder --size 160x120 --ray-cast never --extrusions search --out "$work/cyls.png" 2>&1)
+check "--extrusions search searches the cylinder's mesh" bash -c "grep -q gbuffer-pyramid <<<\"\$0\" && grep -q 'extrusion mirrors (1) searched' <<<\"\$0\"" "$output"
+fails_with "unknown extrusion handling is refused" "--extrusions expects solve or search, got 'exact'" render --extrusions exact
 fails_with "unknown virtual pixels are refused" "--virtual-pixels expects exact-hit or as-placed, got 'smooth'" render --virtual-pixels smooth
 fails_with "an unknown search lists the searches" "--search expects crosshair, hierarchy or explosion-map, got 'walk'" render --search walk
 fails_with "a G-buffer scale past the bound is refused" "--gbuffer-scale expects texels per pixel from 0.125 to 4, got '8'" render --gbuffer-scale 8

@@ -168,7 +168,7 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
 // Every search option `serve --help` lists as a sessions' default reaches a new session.
 TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
   Process server({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine",
-                  "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed"});
+                  "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed", "--extrusions", "search"});
   const std::smatch listening = server.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
   ASSERT_FALSE(listening.empty()) << server.output();
   auto client = greetedClient(static_cast<std::uint16_t>(std::stoi(listening[1])), net::Encoding::Proto, 64, 48);
@@ -183,6 +183,7 @@ TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
   EXPECT_EQ(welcome->settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
   EXPECT_EQ(welcome->settings().explosion_map_size(), 128u);
   EXPECT_EQ(welcome->settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
+  EXPECT_EQ(welcome->settings().extrusions(), v1::EXTRUSIONS_SEARCH);
 }
 
 TEST(ServeProcess, RefusesANonLoopbackBindWithoutAToken) {

@@ -151,6 +151,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_search(v1::SEARCH_EXPLOSION_MAP_REFINED);
     settings.mutable_settings()->set_explosion_map_size(512);
     settings.mutable_settings()->set_virtual_pixels(v1::PIXELS_AS_PLACED);
+    settings.mutable_settings()->set_extrusions(v1::EXTRUSIONS_SEARCH);
     settings.mutable_settings()->set_error_budget_px(-1.0f);  // 0: only exact decisions
     ASSERT_TRUE(client->send(settings).ok());
     ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
@@ -171,6 +172,7 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
   EXPECT_EQ(welcome.settings().explosion_map_size(), 512u);
   EXPECT_EQ(welcome.settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
+  EXPECT_EQ(welcome.settings().extrusions(), v1::EXTRUSIONS_SEARCH);
   EXPECT_EQ(welcome.settings().error_budget_px(), -1.0f);
   EXPECT_NE(welcome.resume_token(), token) << "a token resumes once";
 

@@ -6,6 +6,7 @@ namespace specula::scene::builtin {
 
 Scene checkerSphereScene();
 Scene meshSphereScene();
+Scene cylinderScene();
 Scene kitchenScene();
 Scene ufoScene();
 Scene antsScene();

@@ -20,6 +20,8 @@ constexpr std::array kEntries{
           builtin::checkerSphereScene},
     Entry{"mesh-sphere", "checker-sphere with its mirror as what real mirrors are, a 128x64 mesh (the sphere only measures it)",
           builtin::meshSphereScene},
+    Entry{"cylinder", "mirror cylinder (a declared extrusion of a circle) among a box, a ball and a pillar on the checker floor",
+          builtin::cylinderScene},
     Entry{"kitchen", "metal bowl (mixed curvature) on a kitchen table with fruit, cup and bottle (~15k vertices)",
           builtin::kitchenScene},
     Entry{"ufo", "spinning mirror saucer descending over a city square with driving trucks (~80k vertices)",

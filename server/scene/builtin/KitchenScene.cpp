@@ -132,7 +132,7 @@ Scene kitchenScene() {
   const std::uint32_t bowl =
       addObject(scene, "bowl", addMesh(scene, bowlMesh()), addMaterial(scene, mirror("steel", 0x9AA0A8, 0.85f)),
                 placed({0.0f, kTableTop, 0.0f}));
-  scene.objects[bowl].mirror = MirrorInfo{MirrorCurvature::Mixed, true, std::nullopt, std::nullopt};
+  scene.objects[bowl].mirror = MirrorInfo{MirrorCurvature::Mixed, true, std::nullopt, std::nullopt, std::nullopt};
 
   // Fine objects, kept clear of the circle the orbiting apple sweeps (radius 0.31 about the bowl).
   const std::uint32_t fruitSphere = addMesh(scene, primitives::uvSphere("fruit", 1.0f, 40, 20));

@@ -244,7 +244,7 @@ Scene ufoScene() {
   // The saucer comes down over the square, hovers, and climbs away again, spinning all the while.
   const std::uint32_t saucer = addObject(scene, "saucer", addMesh(scene, saucerMesh()),
                                          addMaterial(scene, mirror("saucer-hull", 0xB8C0C8, 0.9f)));
-  scene.objects[saucer].mirror = MirrorInfo{MirrorCurvature::Convex, true, std::nullopt, std::nullopt};
+  scene.objects[saucer].mirror = MirrorInfo{MirrorCurvature::Convex, true, std::nullopt, std::nullopt, std::nullopt};
   scene.objects[saucer].reflected = false;  // the only mirror, and convex: it never shows itself
   const std::uint32_t saucerLights = addObject(scene, "saucer-lights", addMesh(scene, saucerLightsMesh()),
                                                addMaterial(scene, emissive("saucer-glow", 0x7CF5FF)));

@@ -66,7 +66,7 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
 constexpr int kSearchComparisonFrames = 10;
 
 // Every search strategy (the explosion map's look-ups unrefined) along the scene's first frames
-// (coherence from the first, cold, one).
+// (coherence from the first, cold, one), on every mirror's mesh, extrusions included.
 Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::Renderer& renderer, const BenchOptions& options) {
   std::vector<SceneBenchResult::SearchComparison> comparisons;
   for (passes::SearchStrategy strategy : passes::kSearchStrategies) {
@@ -74,6 +74,7 @@ Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::
     settings.search = strategy;
     settings.explosionRefine = false;
     settings.rayCast = passes::RayCastRule::Never;  // every visible mirror part searched, so both searches are compared
+    settings.solveExtrusions = false;               // an extrusion's mesh is searched too, not solved
     renderer.resetCoherence();
     SceneBenchResult::SearchComparison comparison{strategy, 0.0, {}, 0, 0};
     StepAccumulator steps;

@@ -30,6 +30,27 @@ std::optional<std::string> meshProblem(const Mesh& mesh) {
   return std::nullopt;
 }
 
+// An extrusion mirror's drawn mesh must be the extrusion's side: a cap would be solved as if it were
+// side, and a profile that is not the mesh's would put every reflection point off the drawn surface.
+std::optional<std::string> extrusionMeshProblem(const Mesh& mesh, const math::Extrusion& extrusion) {
+  constexpr double kOffProfile = 0.02;  // of the radius: a faceted mesh's vertices lie on the curve
+  constexpr double kAlongSine = 0.1;    // normals within about 6° of square to the direction
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vertex& v = mesh.vertices[i];
+    const glm::dvec3 offset = glm::dvec3(v.position) - extrusion.axisPoint;
+    const glm::dvec2 unit(glm::dot(offset, extrusion.u) / extrusion.radii.x, glm::dot(offset, extrusion.v) / extrusion.radii.y);
+    if (std::abs(glm::dot(glm::normalize(glm::dvec3(v.normal)), extrusion.direction)) > kAlongSine)
+      return "vertex " + std::to_string(i) + " of mesh '" + mesh.name +
+             "' has a normal along the extrusion (a cap?): an extrusion mirror's mesh is its side only; make caps another "
+             "object, and the mirror open with a closed twin";
+    const double off = std::abs(glm::length(unit) - 1.0);
+    if (off > kOffProfile)
+      return "vertex " + std::to_string(i) + " of mesh '" + mesh.name + "' lies " + std::to_string(off) +
+             " of a radius off the declared profile: the extrusion must describe the mirror's mesh (its axis point, direction and radii)";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> transformProblem(const math::Transform& t) {
   if (!finite(t)) return "transform has a non-finite value";
   if (std::abs(glm::length(t.rotation) - 1.0f) > 1e-3f) return "rotation quaternion is not unit length";
@@ -81,6 +102,7 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
           return where + "extrusion needs a finite axis point, an orthonormal frame and positive radii";
         if (o.mirror->analytic) return where + "a mirror is an analytic quadric or an extrusion, not both";
         if (o.mirror->curvature != MirrorCurvature::Convex) return where + "an extrusion mirror must be convex";
+        if (auto problem = extrusionMeshProblem(scene.meshes[o.mesh], *e)) return where + *problem;
       }
     }
   }

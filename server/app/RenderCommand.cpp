@@ -236,6 +236,14 @@ int runRender(std::span<const std::string> arguments) {
   const scene::Scene& s = **scene;
   std::printf("scene %s: %zu objects, %zu vertices, %zu triangles, %zu mirrors; time %.3f s\n", s.name.c_str(),
               s.objects.size(), s.vertexCount(), s.triangleCount(), s.mirrorCount(), *time);
+  std::size_t patches = 0, patchTriangles = 0;
+  for (const scene::SceneObject& object : s.objects) {
+    const scene::Mesh& mesh = s.meshes[object.mesh];
+    patches += mesh.patches.size();
+    patchTriangles += mesh.patches.empty() ? 0 : mesh.triangleCount();
+  }
+  // Drawn as each parametric mesh's uniform grid (scene::parametricMesh), whatever the view.
+  if (patches > 0) std::printf("parametric: %zu patches -> %zu triangles\n", patches, patchTriangles);
   std::fputs(timings.c_str(), stdout);
   std::printf("wrote %s (%zu bytes)\n", out.c_str(), bytes->size());
   return 0;

@@ -5,9 +5,11 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <memory>
 #include <variant>
 
 #include "math/ExtrusionReflection.h"
+#include "math/PatchReflection.h"
 #include "math/SphereReflection.h"
 
 namespace specula::bench {
@@ -18,13 +20,15 @@ bool isAnalyticSphere(const scene::SceneObject& object) {
   return object.mirror && object.mirror->analytic && object.mirror->analytic->kind == scene::AnalyticShape::Kind::Sphere;
 }
 
-bool hasExactShape(const scene::SceneObject& object) {
-  return isAnalyticSphere(object) || (object.mirror && object.mirror->extrusion);
+bool hasExactShape(const scene::SceneObject& object, const scene::Scene& scene) {
+  return isAnalyticSphere(object) || (object.mirror && object.mirror->extrusion) ||
+         (object.mirror && !scene.meshes[object.mesh].patches.empty());
 }
 
-// The exact answer for one mirror in world space: its analytic sphere or its declared extrusion.
+// The exact answer for one mirror in world space: its analytic sphere, its declared extrusion or its
+// Bézier patches.
 struct ExactMirror {
-  std::variant<math::Sphere, math::Extrusion> shape;
+  std::variant<math::Sphere, math::Extrusion, std::shared_ptr<const math::PatchReflectionSolver>> shape;
   // An extrusion is unbounded; the mirror spans these heights along it (its mesh's): a reflection
   // point beyond them lies on no mirror, so whatever the search made of it is not judged.
   glm::dvec2 heights{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
@@ -35,12 +39,23 @@ struct ExactMirror {
     constexpr double kOnSurface = 1.0 + 1e-5;  // of the radius: float rounding of a vertex placed on it
     if (const auto* sphere = std::get_if<math::Sphere>(&shape))
       return glm::length(point - sphere->center) <= kOnSurface * sphere->radius;
+    if (!std::holds_alternative<math::Extrusion>(shape)) return false;  // patches: their own vertices are skipped
     const auto& extrusion = std::get<math::Extrusion>(shape);
     const glm::dvec3 offset = point - extrusion.axisPoint;
     return glm::length(glm::dvec2(glm::dot(offset, extrusion.u), glm::dot(offset, extrusion.v)) / extrusion.radii) <= kOnSurface;
   }
 
-  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex) const {
+  // A surface of patches may reflect a vertex at several points: the one nearest `searched` is judged.
+  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex,
+                                               const glm::dvec3& searched) const {
+    if (const auto* solver = std::get_if<std::shared_ptr<const math::PatchReflectionSolver>>(&shape)) {
+      const std::vector<math::PatchPoint> points = (*solver)->solve(eye, vertex);
+      if (points.empty()) return std::nullopt;
+      const auto nearest = std::min_element(points.begin(), points.end(), [&](const auto& a, const auto& b) {
+        return glm::length(a.position - searched) < glm::length(b.position - searched);
+      });
+      return math::SurfacePoint{nearest->position, nearest->normal, 0.0};
+    }
     if (const auto* sphere = std::get_if<math::Sphere>(&shape)) {
       const auto point = math::sphereReflectionPoint(*sphere, eye, vertex);
       if (!point) return std::nullopt;
@@ -59,6 +74,11 @@ struct ExactMirror {
 
 // The mirror's exact shape in world space; nullopt when its transform does not keep a sphere one.
 std::optional<ExactMirror> worldShape(const scene::MirrorInfo& mirror, const scene::Mesh& mesh, const glm::mat4& objectToWorld) {
+  if (!mesh.patches.empty()) {
+    std::vector<math::BezierPatch> world;
+    for (const math::BezierPatch& patch : mesh.patches) world.push_back(patch.transformed(glm::dmat4(objectToWorld)));
+    return ExactMirror{std::make_shared<const math::PatchReflectionSolver>(std::move(world))};
+  }
   if (mirror.extrusion) {
     const auto extrusion = mirror.extrusion->transformed(glm::dmat4(objectToWorld));
     if (!extrusion) return std::nullopt;
@@ -98,7 +118,10 @@ double ReflectionPointErrors::mean() const {
   return pixels.empty() ? 0.0 : std::accumulate(pixels.begin(), pixels.end(), 0.0) / static_cast<double>(pixels.size());
 }
 
-bool hasExactMirror(const scene::Scene& scene) { return std::any_of(scene.objects.begin(), scene.objects.end(), hasExactShape); }
+bool hasExactMirror(const scene::Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [&](const scene::SceneObject& object) { return hasExactShape(object, scene); });
+}
 
 namespace {
 
@@ -106,7 +129,7 @@ namespace {
 void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const ExactMirror& mirror, const glm::dvec3& eye,
            const glm::dvec3& vertex, const glm::vec3& reflectionPoint, int flags, std::size_t slot, double marginPixels) {
   if (mirror.encloses(vertex)) return;
-  const std::optional<math::SurfacePoint> solved = mirror.reflection(eye, vertex);
+  const std::optional<math::SurfacePoint> solved = mirror.reflection(eye, vertex, glm::dvec3(reflectionPoint));
   const std::optional<glm::dvec3> exact = solved ? std::optional(solved->position) : std::nullopt;
   const bool searchVisible = (flags & (passes::ReflectedVertex::kHidden | passes::ReflectedVertex::kUnsolved)) == 0;
   if (!exact) {
@@ -136,7 +159,7 @@ std::optional<ExactMirror> measuredShape(const scene::Scene& scene, const scene:
   // Mirrors not drawn this frame still hold an older frame's results.
   if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror) == frame.drawnMirrors.end()) return std::nullopt;
   const scene::SceneObject& mirrorObject = scene.objects[mirror];
-  if (!hasExactShape(mirrorObject)) return std::nullopt;
+  if (!hasExactShape(mirrorObject, scene)) return std::nullopt;
   return worldShape(*mirrorObject.mirror, scene.meshes[mirrorObject.mesh], pose.objectToWorld[mirror]);
 }
 
@@ -151,7 +174,10 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
     const auto shape = measuredShape(scene, pose, frame, mirror.mirrorObject);
     if (!shape) continue;
+    const bool patches = std::holds_alternative<std::shared_ptr<const math::PatchReflectionSolver>>(shape->shape);
     for (const passes::ReflectionSlotRange& range : mirror.reflected) {
+      // A vertex on the patches themselves is its own reflection point: nothing to judge.
+      if (patches && range.object == mirror.mirrorObject) continue;
       const scene::Mesh& mesh = scene.meshes[scene.objects[range.object].mesh];
       for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
         const std::size_t slot = range.firstSlot + v;

@@ -37,9 +37,12 @@ TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip
 Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::GlApi& gl) {
   auto mesh = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-mesh.frag"});
   if (!mesh) return Error{mesh.error()};
+  auto patch = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-patch.frag"});
+  if (!patch) return Error{patch.error()};
   auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer-quadric.frag"});
   if (!quadric) return Error{quadric.error()};
-  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(quadric.value())));
+  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(patch.value()),
+                                                             std::move(quadric.value())));
 }
 
 void MirrorGBufferPass::execute(const FrameContext& frame) {
@@ -62,6 +65,9 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   gl.Enable(GL_SCISSOR_TEST);
   mesh_.use();
   mesh_.set("worldToClip", worldToClip);
+  patch_.use();
+  patch_.set("worldToClip", worldToClip);
+  patch_.set("eyePosition", frame.pose.camera.eye);
   quadric_.use();
   quadric_.set("worldToClip", worldToClip);
   quadric_.set("eyePosition", frame.pose.camera.eye);
@@ -94,14 +100,22 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
       gl.DrawArrays(GL_TRIANGLES, 0, kQuadricProxyVertices);
       continue;
     }
-    mesh_.use();
-    mesh_.set("objectToWorld", objectToWorld);
-    mesh_.set("normalToWorld", math::normalMatrix(objectToWorld));
+    const std::size_t searchMesh = frame.searchMesh(mirror->mirrorObject);
+    const scene::Mesh& drawn = frame.scene.meshes[searchMesh];
+    const gl::ShaderProgram& program = drawn.patches.empty() ? mesh_ : patch_;
+    program.use();
+    program.set("objectToWorld", objectToWorld);
+    program.set("normalToWorld", math::normalMatrix(objectToWorld));
     // A mirror of several parts draws them all for depth, and marks only this part's texels.
-    mesh_.set("part", mirror->partCount > 1 ? mirror->part : -1);
+    program.set("part", mirror->partCount > 1 ? mirror->part : -1);
     if (mirror->partCount > 1)
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, resources.triangleParts(mirror->mirrorObject));
-    frame.meshes.draw(frame.searchMesh(mirror->mirrorObject));
+    if (!drawn.patches.empty()) {
+      program.set("worldToObject", glm::inverse(objectToWorld));
+      program.set("trianglesPerPatch", 2 * drawn.patchSegments * drawn.patchSegments);
+      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resources.patchControlPoints(searchMesh));
+    }
+    frame.meshes.draw(searchMesh);
   }
   gl.Disable(GL_SCISSOR_TEST);
   const GLenum single[] = {GL_COLOR_ATTACHMENT0};

@@ -31,12 +31,47 @@ std::optional<double> analyticT(const AnalyticSurface& surface, unsigned id, con
   return surface.intersect(origin, direction, 0.0, tMax);
 }
 
-void analyticBounds(const RTCBoundsFunctionArguments* args) {
-  const auto [low, high] = static_cast<const AnalyticSurface*>(args->geometryUserPtr)->bounds();
-  // Rounded outwards so the float box still contains the double surface.
+// The one rule for where a ray meets a piece of a parametric surface: a ray that left the surface
+// ignores hits within the surface's self-hit distance of its start.
+std::optional<PatchSurfaceHit> patchT(const PatchSurface& surface, unsigned id, unsigned piece, const Ray& ray,
+                                      double tMax, const Departure* departure) {
+  const double tMin = departure && departure->geometry == id ? surface.selfHitDistance() : 0.0;
+  return surface.intersectPiece(piece, glm::dvec3(ray.origin), glm::dvec3(ray.direction), tMin, tMax);
+}
+
+// Rounded outwards so the float box still contains the double surface.
+RTCBounds outwardBounds(const glm::dvec3& low, const glm::dvec3& high) {
   const auto down = [](double x) { return std::nextafter(static_cast<float>(x), -kInfinity); };
   const auto up = [](double x) { return std::nextafter(static_cast<float>(x), kInfinity); };
-  *args->bounds_o = RTCBounds{down(low.x), down(low.y), down(low.z), 0.0f, up(high.x), up(high.y), up(high.z), 0.0f};
+  return RTCBounds{down(low.x), down(low.y), down(low.z), 0.0f, up(high.x), up(high.y), up(high.z), 0.0f};
+}
+
+Ray rayOf(const RTCRayHit& rayHit) {
+  return Ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z}, {rayHit.ray.dir_x, rayHit.ray.dir_y, rayHit.ray.dir_z}};
+}
+
+void patchBounds(const RTCBoundsFunctionArguments* args) {
+  const auto [low, high] = static_cast<const PatchSurface*>(args->geometryUserPtr)->pieceBounds(args->primID);
+  *args->bounds_o = outwardBounds(low, high);
+}
+
+void patchIntersect(const RTCIntersectFunctionNArguments* args) {
+  assert(args->N == 1);  // rtcIntersect1 is the only query
+  if (args->valid[0] == 0) return;
+  RTCRayHit& rayHit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
+  const auto* context = reinterpret_cast<const TraceContext*>(args->context);
+  const auto hit = patchT(*static_cast<const PatchSurface*>(args->geometryUserPtr), args->geomID, args->primID,
+                          rayOf(rayHit), rayHit.ray.tfar, context->departure);
+  if (!hit) return;
+  rayHit.ray.tfar = static_cast<float>(hit->t);
+  rayHit.hit.geomID = args->geomID;
+  rayHit.hit.primID = args->primID;
+  rayHit.hit.instID[0] = args->context->instID[0];
+}
+
+void analyticBounds(const RTCBoundsFunctionArguments* args) {
+  const auto [low, high] = static_cast<const AnalyticSurface*>(args->geometryUserPtr)->bounds();
+  *args->bounds_o = outwardBounds(low, high);
 }
 
 void analyticIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -44,9 +79,7 @@ void analyticIntersect(const RTCIntersectFunctionNArguments* args) {
   if (args->valid[0] == 0) return;
   RTCRayHit& rayHit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
   const auto* context = reinterpret_cast<const TraceContext*>(args->context);
-  const Ray ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z},
-                {rayHit.ray.dir_x, rayHit.ray.dir_y, rayHit.ray.dir_z}};
-  const auto t = analyticT(*static_cast<const AnalyticSurface*>(args->geometryUserPtr), args->geomID, ray,
+  const auto t = analyticT(*static_cast<const AnalyticSurface*>(args->geometryUserPtr), args->geomID, rayOf(rayHit),
                            rayHit.ray.tfar, context->departure);
   if (!t) return;
   rayHit.ray.tfar = static_cast<float>(*t);
@@ -71,10 +104,13 @@ Result<std::unique_ptr<PosedScene>> PosedScene::build(RTCDevice device, const sc
   // Every record exists before any is attached: analytic geometries keep pointers into them.
   for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
     const scene::SceneObject& object = scene.objects[i];
-    Geometry geometry{i, std::nullopt, &scene.meshes[object.mesh], nullptr, math::normalMatrix(pose.objectToWorld[i])};
+    Geometry geometry{i, std::nullopt, nullptr, &scene.meshes[object.mesh], nullptr,
+                      math::normalMatrix(pose.objectToWorld[i])};
     // An open mirror's shape would also cover where the mesh has no surface, so only closed ones use it.
     if (object.mirror && object.mirror->exactQuadric())
       geometry.analytic.emplace(*object.mirror->analytic, pose.objectToWorld[i]);
+    else if (!geometry.mesh->patches.empty())
+      geometry.patches = std::make_shared<PatchSurface>(geometry.mesh->patches, pose.objectToWorld[i]);
     else if (geometry.mesh->triangleCount() == 0)
       continue;
     posed->geometries_.push_back(geometry);
@@ -101,6 +137,12 @@ void PosedScene::attach(RTCDevice device, Geometry& geometry, unsigned id, const
     rtcSetGeometryUserData(handle, &*geometry.analytic);
     rtcSetGeometryBoundsFunction(handle, analyticBounds, nullptr);
     rtcSetGeometryIntersectFunction(handle, analyticIntersect);
+  } else if (geometry.patches) {
+    handle = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(handle, static_cast<unsigned>(geometry.patches->pieceCount()));
+    rtcSetGeometryUserData(handle, const_cast<PatchSurface*>(geometry.patches.get()));
+    rtcSetGeometryBoundsFunction(handle, patchBounds, nullptr);
+    rtcSetGeometryIntersectFunction(handle, patchIntersect);
   } else {
     const scene::Mesh& mesh = *geometry.mesh;
     handle = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -141,8 +183,9 @@ std::optional<SurfaceHit> PosedScene::intersect(const Ray& ray, unsigned mask, c
   rtcIntersect1(scene_, &context.embree, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   const Geometry& geometry = geometries_[rayHit.hit.geomID];
-  return geometry.analytic ? analyticHit(geometry, rayHit.hit.geomID, ray, departure)
-                           : triangleHit(geometry, rayHit.hit.primID, ray);
+  if (geometry.analytic) return analyticHit(geometry, rayHit.hit.geomID, ray, departure);
+  if (geometry.patches) return patchHit(geometry, rayHit.hit.geomID, rayHit.hit.primID, ray, departure);
+  return triangleHit(geometry, rayHit.hit.primID, ray);
 }
 
 SurfaceHit PosedScene::triangleHit(const Geometry& geometry, unsigned primitive, const Ray& ray) const {
@@ -181,6 +224,22 @@ SurfaceHit PosedScene::analyticHit(const Geometry& geometry, unsigned id, const 
   hit.geometricNormal = surface.outwardNormal(hit.position);
   hit.shadingNormal = hit.geometricNormal;
   hit.uv = surface.uv(hit.position);
+  hit.analyticGeometry = id;
+  return hit;
+}
+
+SurfaceHit PosedScene::patchHit(const Geometry& geometry, unsigned id, unsigned piece, const Ray& ray,
+                                const Departure* departure) const {
+  // Embree kept only a float distance; the same rule on the same piece gives the double hit.
+  const auto found = patchT(*geometry.patches, id, piece, ray, std::numeric_limits<double>::infinity(), departure);
+  assert(found);
+  const math::PatchSample sample = geometry.patches->sample(*found);
+  SurfaceHit hit;
+  hit.object = geometry.object;
+  hit.position = sample.position;
+  hit.geometricNormal = sample.normal;
+  hit.shadingNormal = sample.normal;
+  hit.uv = glm::vec2(found->uv);
   hit.analyticGeometry = id;
   return hit;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // One pose of a scene as an Embree scene: world-space triangles for meshes, exact quadrics (Embree user
-// geometry, double precision) for closed mirrors with an analytic shape, which replace their meshes.
+// geometry, double precision) for closed mirrors with an analytic shape, which replace their meshes, and
+// exact Bézier patches (user geometry too) for parametric meshes, which replace their grids.
 #include <embree3/rtcore.h>
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 
 #include "base/Result.h"
 #include "reference/AnalyticSurface.h"
+#include "reference/PatchSurface.h"
 #include "scene/Scene.h"
 #include "scene/ScenePose.h"
 
@@ -37,7 +39,7 @@ struct SurfaceHit {
   glm::dvec3 geometricNormal{0.0};  // world, unit: the triangle's winding normal or the quadric's outward one
   glm::dvec3 shadingNormal{0.0};    // world, not unit: interpolated like the rasterizer's, or the exact normal
   glm::vec2 uv{0.0f};
-  std::optional<unsigned> analyticGeometry;  // the geometry ID when the hit is on an analytic surface
+  std::optional<unsigned> analyticGeometry;  // the geometry ID when the hit is on an analytic surface or patches
 };
 
 class PosedScene {
@@ -58,6 +60,7 @@ class PosedScene {
   struct Geometry {
     std::uint32_t object = 0;
     std::optional<AnalyticSurface> analytic;  // set: user geometry; unset: the object's triangle mesh
+    std::shared_ptr<const PatchSurface> patches;  // set: user geometry of the mesh's exact patches
     const scene::Mesh* mesh = nullptr;
     const glm::vec3* worldPositions = nullptr;  // Embree's vertex buffer, one per mesh vertex
     glm::mat3 normalToWorld{1.0f};
@@ -67,6 +70,8 @@ class PosedScene {
   void attach(RTCDevice device, Geometry& geometry, unsigned id, const glm::mat4& objectToWorld, unsigned mask);
   SurfaceHit triangleHit(const Geometry& geometry, unsigned primitive, const Ray& ray) const;
   SurfaceHit analyticHit(const Geometry& geometry, unsigned id, const Ray& ray, const Departure* departure) const;
+  SurfaceHit patchHit(const Geometry& geometry, unsigned id, unsigned piece, const Ray& ray,
+                      const Departure* departure) const;
 
   RTCScene scene_;
   std::vector<Geometry> geometries_;  // indexed by Embree geometry ID

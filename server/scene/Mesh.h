@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "math/BezierPatch.h"
+
 namespace specula::scene {
 
 struct Vertex {
@@ -17,6 +19,11 @@ struct Mesh {
   std::string name;
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;  // size is a multiple of 3; every index < vertices.size()
+  // Set when the mesh is a parametric surface (scene/ParametricMesh.h): these patches are its exact
+  // surface (object space) and the triangles their uniform grid of patchSegments² quads per patch,
+  // patch after patch, with uv = (u, v) on the triangle's patch.
+  std::vector<math::BezierPatch> patches{};
+  int patchSegments = 0;
 
   std::size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -27,6 +27,12 @@ std::optional<std::string> meshProblem(const Mesh& mesh) {
     if (!finite(v.position) || !finite(v.normal) || !finite(v.uv))
       return where + "vertex " + std::to_string(i) + " has a non-finite value";
   }
+  // The renderer finds a triangle's patch from its index: the grid must be exactly parametricMesh's.
+  if (!mesh.patches.empty() &&
+      (mesh.patchSegments < 1 ||
+       mesh.triangleCount() != mesh.patches.size() * 2 * static_cast<std::size_t>(mesh.patchSegments * mesh.patchSegments)))
+    return where + "its triangles are not the uniform grid of its " + std::to_string(mesh.patches.size()) +
+           " patches; build it with scene::parametricMesh";
   return std::nullopt;
 }
 

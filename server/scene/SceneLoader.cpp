@@ -6,6 +6,8 @@
 #include <limits>
 #include <optional>
 
+#include "math/BSplineSurface.h"
+
 #include "math/Color.h"
 #include "scene/AssetFiles.h"
 #include "scene/GltfImporter.h"
@@ -13,6 +15,7 @@
 #include "scene/MeshSubdivision.h"
 #include "scene/NameIndex.h"
 #include "scene/ObjImporter.h"
+#include "scene/ParametricMesh.h"
 #include "scene/Primitives.h"
 #include "scene/SceneChecks.h"
 #include "scene/StrictJson.h"
@@ -172,6 +175,45 @@ Mesh readPrimitive(const JsonNode& node, std::string name) {
             "; use grid, sphere, box, cylinder, torus or lathe");
 }
 
+// [[16 × [x, y, z]], ...]: bicubic Bézier patches, each four rows of four control points (u along a row).
+std::vector<math::BezierPatch> readBezierPatches(const JsonNode& node) {
+  std::vector<math::BezierPatch> patches;
+  for (const JsonNode& patch : node.array(1, math::BSplineSurface::kMaxPatches)) {
+    const std::vector<JsonNode> points = patch.array(16, 16);
+    math::BezierPatch& bezier = patches.emplace_back();
+    for (std::size_t i = 0; i < points.size(); ++i) bezier.points[i] = glm::dvec3(points[i].vec3());
+  }
+  return patches;
+}
+
+// {"degree": [du, dv], "count": [nu, nv], "knots_u": [...], "knots_v": [...], "points": [nu·nv × [x, y, z]]}:
+// a tensor-product B-spline surface, rows of nu points along u, nv rows along v.
+std::vector<math::BezierPatch> readBSpline(const JsonNode& node) {
+  node.expectObject({"degree", "count", "knots_u", "knots_v", "points"});
+  math::BSplineSurface surface;
+  const auto pair = [&](std::string_view key, std::int64_t low, std::int64_t high) {
+    const std::vector<JsonNode> values = node.at(key).array(2, 2);
+    return glm::ivec2(static_cast<int>(values[0].integer(low, high)), static_cast<int>(values[1].integer(low, high)));
+  };
+  surface.degree = pair("degree", 1, math::BSplineSurface::kMaxDegree);
+  surface.count = pair("count", 2, 4096);
+  const auto knots = [&](std::string_view key, int count, int degree) {
+    std::vector<double> values;
+    for (const JsonNode& knot : node.at(key).array(0, 4096 + 4)) values.push_back(knot.number());
+    if (values.size() != static_cast<std::size_t>(count + degree + 1))
+      node.at(key).fail("has " + std::to_string(values.size()) + " knots; " + std::to_string(count) + " points of degree " +
+                        std::to_string(degree) + " need " + std::to_string(count + degree + 1));
+    return values;
+  };
+  surface.knotsU = knots("knots_u", surface.count.x, surface.degree.x);
+  surface.knotsV = knots("knots_v", surface.count.y, surface.degree.y);
+  const JsonNode points = node.at("points");
+  const auto expected = static_cast<std::size_t>(surface.count.x) * static_cast<std::size_t>(surface.count.y);
+  for (const JsonNode& point : points.array(expected, expected)) surface.controlNet.push_back(glm::dvec3(point.vec3()));
+  if (auto problem = math::bsplineProblem(surface)) node.fail(*problem);
+  return math::bezierPatchesOf(surface);
+}
+
 GltfMeshSelector readMeshSelector(const JsonNode& node) {
   if (node.isString()) return node.string();
   if (node.isNumber()) return static_cast<std::size_t>(node.integer(0, std::numeric_limits<std::int32_t>::max()));
@@ -180,7 +222,22 @@ GltfMeshSelector readMeshSelector(const JsonNode& node) {
 
 Mesh readMeshSource(const JsonNode& node, const fs::path& baseDir, std::string name) {
   const std::optional<JsonNode> pick = node.find("mesh");
-  if (node.oneOf({"file", "primitive"}) == "primitive") {
+  const std::string_view source = node.oneOf({"file", "primitive", "bezier_patches", "bspline"});
+  const std::optional<JsonNode> segments = node.find("segments");
+  if (segments && source != "bezier_patches" && source != "bspline")
+    segments->fail("\"segments\" sets the grid of a parametric surface (bezier_patches or bspline) only");
+  if (source == "bezier_patches" || source == "bspline") {
+    if (pick) pick->fail("\"mesh\" picks a mesh inside a glTF \"file\"; a parametric surface has none");
+    std::vector<math::BezierPatch> patches =
+        source == "bspline" ? readBSpline(node.at("bspline")) : readBezierPatches(node.at("bezier_patches"));
+    const int perSide = segments ? static_cast<int>(segments->integer(1, 64)) : kDefaultPatchSegments;
+    const std::size_t vertices = patches.size() * static_cast<std::size_t>((perSide + 1) * (perSide + 1));
+    if (vertices > kMaxVerticesPerScene)
+      node.fail(std::to_string(patches.size()) + " patches at " + std::to_string(perSide) + " segments a side make " +
+                std::to_string(vertices) + " vertices, more than a scene may have; lower \"segments\"");
+    return parametricMesh(std::move(name), std::move(patches), perSide);
+  }
+  if (source == "primitive") {
     if (pick) pick->fail("\"mesh\" picks a mesh inside a glTF \"file\"; a primitive has none");
     return readPrimitive(node.at("primitive"), std::move(name));
   }
@@ -203,10 +260,12 @@ Mesh readMeshSource(const JsonNode& node, const fs::path& baseDir, std::string n
 
 // A mesh entry: its source, then long edges split when "max_edge" asks for it.
 Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) {
-  node.expectObject({"name", "file", "mesh", "primitive", "max_edge"});
+  node.expectObject({"name", "file", "mesh", "primitive", "bezier_patches", "bspline", "segments", "max_edge"});
   Mesh mesh = readMeshSource(node, baseDir, meshes.add(node.at("name")));
   const std::optional<JsonNode> maxEdge = node.find("max_edge");
   if (!maxEdge) return mesh;
+  if (!mesh.patches.empty())
+    maxEdge->fail("a parametric surface's grid is set by \"segments\", not split by \"max_edge\"; drop max_edge");
   std::optional<Mesh> split = subdivideLongEdges(mesh, static_cast<float>(maxEdge->positive()), kMaxVerticesPerScene / 3);
   if (!split)
     maxEdge->fail("splitting every edge longer than " + std::to_string(maxEdge->positive()) + " m would make more than " +

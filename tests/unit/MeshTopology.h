@@ -25,7 +25,10 @@ inline std::size_t trianglesFacingAgainstNormals(const Mesh& mesh) {
     const glm::vec3 shading = mesh.vertices[mesh.indices[3 * t]].normal +
                               mesh.vertices[mesh.indices[3 * t + 1]].normal +
                               mesh.vertices[mesh.indices[3 * t + 2]].normal;
-    against += glm::dot(windingNormal(mesh, t), shading) <= 0.0f;
+    const glm::vec3 winding = windingNormal(mesh, t);
+    // A triangle of no area (a parametric grid's quad at a pole) faces nowhere, so it cannot disagree.
+    if (glm::length(winding) < 1e-9f) continue;
+    against += glm::dot(winding, shading) <= 0.0f;
   }
   return against;
 }

@@ -13,5 +13,6 @@ Scene antsScene();
 Scene quadScene();
 Scene teapotTableScene();
 Scene beadsScene();
+Scene utahTeapotScene();
 
 }  // namespace specula::scene::builtin

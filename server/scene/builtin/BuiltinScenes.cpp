@@ -34,6 +34,8 @@ constexpr std::array kEntries{
           builtin::teapotTableScene},
     Entry{"beads", "thirty chrome beads a pixel or two wide on the teapot table (~20k vertices): many tiny mirrors",
           builtin::beadsScene},
+    Entry{"utah-teapot", "chrome Utah teapot (32 Bezier patches, a parametric mirror) among coloured objects on a checker floor",
+          builtin::utahTeapotScene},
 };
 
 constexpr auto kNames = [] {

@@ -50,9 +50,8 @@ TEST(ParametricMirror, SearchedTeapotMatchesTheRayTracedPatches) {
   settings.rayCast = passes::RayCastRule::Never;
   const Measured measured = measure(settings);
   EXPECT_GT(measured.points.pixels.size(), 500u);
-  // Measured 0.09 px. The tail is not yet a bound worth stating: every part of the mixed mirror
-  // searches every vertex, and a part's answer is judged against the nearest solution on the whole
-  // surface (p90 59 px), so only the median is held here.
+  // Measured 0.09 px. The tail (p90 59 px) has no cause found yet (README, Known limits), so only
+  // the median is held here.
   EXPECT_LE(measured.points.percentile(0.5), 0.2);
   // Measured 3.46 %: where a minified checker reflects off the knob's neck and the spout, the two
   // point-sampled images disagree; issue #19's 1.5 % is not reached yet.

@@ -4,12 +4,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <vector>
 
 #include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
 #include "app/ReflectionOptions.h"
+#include "bench/ReflectionAccuracy.h"
 #include "encode/JpegEncoder.h"
 #include "encode/PngEncoder.h"
 #include "reference/RayTracer.h"
@@ -103,6 +105,18 @@ const char* methodWords(passes::PartMethod method) {
     case passes::PartMethod::EnvironmentMap: return "environment map of";
   }
   return "?";
+}
+
+// The patch tessellation of the frame's parametric meshes, as `render` prints it.
+std::string describePatchTessellation(const passes::PatchTessellationMeasure& measure) {
+  const std::vector<double> areas(measure.pixelAreas.begin(), measure.pixelAreas.end());
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "parametric: %zu patches -> %zu triangles (tessellated for this view; %zu on screen, pixel area p10 / "
+                "p50 / p90 %.1f / %.1f / %.1f)\n",
+                measure.patches, measure.triangles, areas.size(), bench::nearestRankPercentile(areas, 0.1),
+                bench::nearestRankPercentile(areas, 0.5), bench::nearestRankPercentile(areas, 0.9));
+  return line;
 }
 
 // Per-stage timings, the plan and search statistics of a GL frame, as `render` prints them.
@@ -203,7 +217,7 @@ int runRender(std::span<const std::string> arguments) {
                                                    : passes::ReflectionMethod::Search;
 
   std::vector<std::uint8_t> rgba;
-  std::string timings;
+  std::string timings, parametric;
   if (method == "raytrace") {
     auto tracer = reference::RayTracer::create(*scene);
     if (!tracer) return fail(tracer.error());
@@ -219,6 +233,9 @@ int runRender(std::span<const std::string> arguments) {
     if (!renderer) return fail(renderer.error());
     auto frame = (*renderer)->render(pose, size->first, size->second, *settings);
     if (!frame) return fail(frame.error());
+    auto patches = (*renderer)->measurePatchTessellation(pose, *frame);
+    if (!patches) return fail(patches.error());
+    if (patches->patches > 0) parametric = describePatchTessellation(*patches);
     rgba = std::move(frame->rgba);
     timings = describeFrame(**scene, *frame, *settings);
   }
@@ -236,14 +253,7 @@ int runRender(std::span<const std::string> arguments) {
   const scene::Scene& s = **scene;
   std::printf("scene %s: %zu objects, %zu vertices, %zu triangles, %zu mirrors; time %.3f s\n", s.name.c_str(),
               s.objects.size(), s.vertexCount(), s.triangleCount(), s.mirrorCount(), *time);
-  std::size_t patches = 0, patchTriangles = 0;
-  for (const scene::SceneObject& object : s.objects) {
-    const scene::Mesh& mesh = s.meshes[object.mesh];
-    patches += mesh.patches.size();
-    patchTriangles += mesh.patches.empty() ? 0 : mesh.triangleCount();
-  }
-  // Drawn as each parametric mesh's uniform grid (scene::parametricMesh), whatever the view.
-  if (patches > 0) std::printf("parametric: %zu patches -> %zu triangles\n", patches, patchTriangles);
+  std::fputs(parametric.c_str(), stdout);
   std::fputs(timings.c_str(), stdout);
   std::printf("wrote %s (%zu bytes)\n", out.c_str(), bytes->size());
   return 0;

@@ -91,6 +91,16 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"point_error_max_px", e ? significant(e->maximum) : ""});
   f.push_back({"misjudged_hidden", e ? std::to_string(e->misjudgedHidden) : ""});
   f.push_back({"misjudged_visible", e ? std::to_string(e->misjudgedVisible) : ""});
+  for (const int factor : SceneBenchResult::kPatchDistanceFactors) {
+    const auto row = std::find_if(r.patchTessellation.begin(), r.patchTessellation.end(),
+                                  [&](const auto& t) { return t.distanceFactor == factor; });
+    const bool has = row != r.patchTessellation.end();
+    const std::string suffix = "_at_distance_x" + std::to_string(factor);
+    f.push_back({"patch_triangles" + suffix, has ? std::to_string(row->triangles) : ""});
+    f.push_back({"patch_area_p10_px" + suffix, has ? number(row->areaP10, 2) : ""});
+    f.push_back({"patch_area_p50_px" + suffix, has ? number(row->areaP50, 2) : ""});
+    f.push_back({"patch_area_p90_px" + suffix, has ? number(row->areaP90, 2) : ""});
+  }
   const auto& c = r.reference;
   f.push_back({"psnr_db", c ? number(c->psnr, 2) : ""});
   f.push_back({"ssim", c ? number(c->ssim, 4) : ""});
@@ -358,6 +368,14 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
              std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
              " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
              std::to_string(r.castTiles.possible) + " object tiles\n";
+    if (!r.patchTessellation.empty()) {
+      std::string patches = "  patch tessellation (last pose, camera distance ×):";
+      for (const SceneBenchResult::PatchTessellation& t : r.patchTessellation)
+        patches += " " + std::to_string(t.distanceFactor) + ": " + std::to_string(t.triangles) + " triangles, pixel area " +
+                   number(t.areaP10, 1) + "/" + number(t.areaP50, 1) + "/" + number(t.areaP90, 1) + ";";
+      patches.back() = '\n';
+      table += patches;
+    }
     if (r.searches.empty()) continue;
     std::string searches = "  searches (first frames, warm):";
     for (const SceneBenchResult::SearchComparison& s : r.searches) {

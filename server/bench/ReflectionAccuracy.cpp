@@ -106,13 +106,14 @@ glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world, int w
   return {(ndc.x * 0.5 + 0.5) * width, (0.5 - ndc.y * 0.5) * height};
 }
 
-double ReflectionPointErrors::percentile(double p) const {
-  if (pixels.empty()) return 0.0;
-  std::vector<double> sorted = pixels;
-  std::sort(sorted.begin(), sorted.end());
-  const double rank = std::ceil(p * static_cast<double>(sorted.size()));  // nearest-rank definition
-  return sorted[std::clamp(static_cast<std::size_t>(std::max(rank, 1.0)) - 1, std::size_t{0}, sorted.size() - 1)];
+double nearestRankPercentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(p * static_cast<double>(values.size()));
+  return values[std::clamp(static_cast<std::size_t>(std::max(rank, 1.0)) - 1, std::size_t{0}, values.size() - 1)];
 }
+
+double ReflectionPointErrors::percentile(double p) const { return nearestRankPercentile(pixels, p); }
 
 double ReflectionPointErrors::mean() const {
   return pixels.empty() ? 0.0 : std::accumulate(pixels.begin(), pixels.end(), 0.0) / static_cast<double>(pixels.size());

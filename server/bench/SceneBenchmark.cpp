@@ -115,6 +115,27 @@ double rasterFloor(render::Renderer& renderer, const scene::ScenePose& pose, con
   return totals.empty() ? 0.0 : median(std::move(totals));
 }
 
+// The tessellation of the scene's patches at `pose` from farther and farther along the line of sight.
+Result<std::vector<SceneBenchResult::PatchTessellation>> patchTessellation(render::Renderer& renderer, scene::ScenePose pose,
+                                                                           const BenchOptions& options) {
+  std::vector<SceneBenchResult::PatchTessellation> rows;
+  const math::Camera camera = pose.camera;
+  passes::ReflectionSettings settings;
+  settings.method = passes::ReflectionMethod::None;  // only the view matters
+  for (const int factor : SceneBenchResult::kPatchDistanceFactors) {
+    pose.camera.eye = camera.target + static_cast<float>(factor) * (camera.eye - camera.target);
+    auto frame = renderer.render(pose, options.width, options.height, settings);
+    if (!frame) return Error{frame.error()};
+    auto measure = renderer.measurePatchTessellation(pose, *frame);
+    if (!measure) return Error{measure.error()};
+    if (measure->patches == 0) return rows;
+    const std::vector<double> areas(measure->pixelAreas.begin(), measure->pixelAreas.end());
+    rows.push_back({factor, measure->triangles, nearestRankPercentile(areas, 0.1), nearestRankPercentile(areas, 0.5),
+                    nearestRankPercentile(areas, 0.9)});
+  }
+  return rows;
+}
+
 }  // namespace
 
 Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene,
@@ -192,6 +213,9 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   }
 
   result.rasterFloorMilliseconds = rasterFloor(r, pose, options);
+  auto tessellation = patchTessellation(r, pose, options);
+  if (!tessellation) return Error{tessellation.error()};
+  result.patchTessellation = std::move(*tessellation);
   auto searches = compareSearches(r, options);
   if (!searches) return Error{searches.error()};
   result.searches = std::move(*searches);

@@ -82,6 +82,17 @@ struct SceneBenchResult {
   };
   std::optional<ReferenceComparison> reference;
 
+  // The parametric meshes' screen-space tessellation at the last pose with the camera moved to
+  // kPatchDistanceFactors times its distance from its target: triangles generated, and the area in
+  // pixels of those on screen (10th, 50th, 90th percentile). Empty in a scene without patches.
+  static constexpr int kPatchDistanceFactors[] = {1, 2, 4};
+  struct PatchTessellation {
+    int distanceFactor = 1;
+    std::size_t triangles = 0;
+    double areaP10 = 0.0, areaP50 = 0.0, areaP90 = 0.0;
+  };
+  std::vector<PatchTessellation> patchTessellation;
+
   // The frame time as a multiple of the ray tracer's for the same frame (below 1: faster than
   // exact ray tracing on this machine); absent without the reference.
   std::optional<double> timeVersusRayTrace() const {

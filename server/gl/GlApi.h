@@ -69,6 +69,7 @@ namespace specula::gl {
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                             \
   X(PFNGLDRAWELEMENTSPROC, DrawElements)                                                           \
   X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                               \
+  X(PFNGLPATCHPARAMETERIPROC, PatchParameteri)                                                     \
   X(PFNGLCREATESHADERPROC, CreateShader)                                                           \
   X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                           \
   X(PFNGLCOMPILESHADERPROC, CompileShader)                                                         \

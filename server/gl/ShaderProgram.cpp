@@ -41,10 +41,12 @@ Result<std::string> expand(std::string_view file, int depth, std::set<std::strin
 
 Result<GLenum> stageOf(std::string_view file) {
   if (file.ends_with(".vert")) return GLenum{GL_VERTEX_SHADER};
+  if (file.ends_with(".tesc")) return GLenum{GL_TESS_CONTROL_SHADER};
+  if (file.ends_with(".tese")) return GLenum{GL_TESS_EVALUATION_SHADER};
   if (file.ends_with(".geom")) return GLenum{GL_GEOMETRY_SHADER};
   if (file.ends_with(".frag")) return GLenum{GL_FRAGMENT_SHADER};
   if (file.ends_with(".comp")) return GLenum{GL_COMPUTE_SHADER};
-  return Error{"shaders/" + std::string(file) + ": unknown stage (use .vert .geom .frag .comp)"};
+  return Error{"shaders/" + std::string(file) + ": unknown stage (use .vert .tesc .tese .geom .frag .comp)"};
 }
 
 std::string infoLog(const GlApi& gl, GLuint object, bool isProgram) {

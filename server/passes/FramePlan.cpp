@@ -77,10 +77,12 @@ PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRa
   // Casting: one draw per reflected object over the part's pixels (fits within 30 %). Searching: a
   // share of the pyramid and the tessellation rounds' readbacks, the virtual objects' raster over
   // the part, and per reflected vertex and triangle the search, tessellation and drawing. How much
-  // a mesh splits is not known before the frame: the per-triangle cost is the ufo's, which splits
-  // much (the kitchen's concave part splits more, teapot-table's meshes hardly: 2x under, 2.5x over).
+  // a mesh splits is not known before the frame. The per-triangle cost is 4x the ufo's (which fit
+  // within 2x the kitchen and teapot-table): utah-teapot's body, tightly curved, splits its floor
+  // so much that at the ufo's cost it was predicted 37 ms and took about 500 (3x the whole frame
+  // ray-cast). Over-predicting costs less: a part is ray-cast, exact, where searching was cheaper.
   constexpr double kCastPerDraw = 0.021, kCastPerPixelAndObject = 5.1e-5;
-  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3, kSearchPerTriangle = 4.5e-3;
+  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3, kSearchPerTriangle = 1.8e-2;
   PartCost cost;
   cost.search = kSearchPerPart + kSearchPerPixel * pixels;
   for (const ReflectionSlotRange* range : reflected) {
@@ -157,7 +159,8 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     if (!everything && !boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f)) continue;
     const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
     const math::Bounds& mirrorBounds = worldBounds[mirror.mirrorObject];
-    const double pixels = projectedPixels(mirrorBounds, camera, frameSize);
+    // The part's own pixels: one part of a mirror casts and searches over its share of the mirror only.
+    const double pixels = projectedPixels(mirror.reach.bounds.transformed(mirrorToWorld), camera, frameSize);
     const bool search = settings.method == ReflectionMethod::Search;
     PartMethod method = settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
     // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.

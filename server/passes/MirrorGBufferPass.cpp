@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "math/Transform.h"
+#include "passes/PatchTessellation.h"
 #include "passes/QuadricUniforms.h"
 
 namespace specula::passes {
@@ -37,7 +38,8 @@ TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip
 Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::GlApi& gl) {
   auto mesh = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-mesh.frag"});
   if (!mesh) return Error{mesh.error()};
-  auto patch = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-patch.frag"});
+  auto patch = gl::ShaderProgram::build(gl, {"common/bezier-patch.vert", "common/bezier-patch.tesc", "common/bezier-patch.tese",
+                                             "mirror-gbuffer/mirror-gbuffer-patch.frag"});
   if (!patch) return Error{patch.error()};
   auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer-quadric.frag"});
   if (!quadric) return Error{quadric.error()};
@@ -66,7 +68,6 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   mesh_.use();
   mesh_.set("worldToClip", worldToClip);
   patch_.use();
-  patch_.set("worldToClip", worldToClip);
   patch_.set("eyePosition", frame.pose.camera.eye);
   quadric_.use();
   quadric_.set("worldToClip", worldToClip);
@@ -106,16 +107,18 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     program.use();
     program.set("objectToWorld", objectToWorld);
     program.set("normalToWorld", math::normalMatrix(objectToWorld));
+    if (!drawn.patches.empty()) setPatchView(program, objectToWorld, worldToClip, size);
     // A mirror of several parts draws them all for depth, and marks only this part's texels.
     program.set("part", mirror->partCount > 1 ? mirror->part : -1);
     if (mirror->partCount > 1)
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, resources.triangleParts(mirror->mirrorObject));
-    if (!drawn.patches.empty()) {
-      program.set("worldToObject", glm::inverse(objectToWorld));
-      program.set("trianglesPerPatch", 2 * drawn.patchSegments * drawn.patchSegments);
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resources.patchControlPoints(searchMesh));
+    if (drawn.patches.empty()) {
+      frame.meshes.draw(searchMesh);
+      continue;
     }
-    frame.meshes.draw(searchMesh);
+    program.set("worldToObject", glm::inverse(objectToWorld));
+    program.set("patchSegments", drawn.patchSegments);
+    frame.meshes.drawPatches(searchMesh);
   }
   gl.Disable(GL_SCISSOR_TEST);
   const GLenum single[] = {GL_COLOR_ATTACHMENT0};

@@ -22,7 +22,7 @@ class MirrorGBufferPass final : public Pass {
   MirrorGBufferPass(const gl::GlApi& gl, gl::ShaderProgram mesh, gl::ShaderProgram patch, gl::ShaderProgram quadric)
       : mesh_(std::move(mesh)), patch_(std::move(patch)), quadric_(std::move(quadric)), emptyVertexArray_(gl) {}
   gl::ShaderProgram mesh_;     // the mirror's (search) mesh
-  gl::ShaderProgram patch_;    // a parametric mesh's grid, each texel evaluated on its exact patch
+  gl::ShaderProgram patch_;    // a parametric mesh tessellated for the view, each texel on its exact patch
   gl::ShaderProgram quadric_;  // an exact quadric inside its proxy box
   gl::GlVertexArray emptyVertexArray_;
 };

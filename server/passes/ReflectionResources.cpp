@@ -50,18 +50,6 @@ ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene
   changed_.resize(slots.mirrors.size());
 }
 
-GLuint ReflectionResources::patchControlPoints(std::size_t mesh) {
-  if (const auto uploaded = patchControlPoints_.find(mesh); uploaded != patchControlPoints_.end())
-    return uploaded->second.id();
-  std::vector<glm::vec4> points;
-  for (const math::BezierPatch& patch : scene_.meshes[mesh].patches)
-    for (const glm::dvec3& point : patch.points) points.emplace_back(glm::vec3(point), 1.0f);
-  const gl::GlBuffer& buffer = patchControlPoints_.emplace(mesh, gl::GlBuffer(*gl_)).first->second;
-  upload(*gl_, buffer, points);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return buffer.id();
-}
-
 const ReflectionResources::MeshBvh& ReflectionResources::meshBvh(std::uint32_t mesh) {
   if (const auto built = meshBvhs_.find(mesh); built != meshBvhs_.end()) return built->second;
   const scene::Mesh& source = scene_.meshes[mesh];

@@ -66,8 +66,6 @@ class ReflectionResources {
   // The hierarchy of a mesh (a mirror's own where it sees itself, an object's in a ray-cast part),
   // built on first use and kept (meshes do not change; objects move rigidly).
   const MeshBvh& meshBvh(std::uint32_t mesh);
-  // A parametric mesh's Bézier control points (object space, 16 vec4 per patch), uploaded on first use.
-  GLuint patchControlPoints(std::size_t mesh);
   // The ray hierarchy (shaders/common/ray-hierarchy.glsl) at the G-buffer's size, one layer per
   // mirror part, levels down to one texel: allocated by the first call after the G-buffer is sized.
   void prepareRayHierarchy();
@@ -128,7 +126,6 @@ class ReflectionResources {
   gl::GlBuffer reflected_, statistics_;
   std::map<std::size_t, gl::GlBuffer> triangleParts_;
   std::map<std::uint32_t, MeshBvh> meshBvhs_;
-  std::map<std::size_t, gl::GlBuffer> patchControlPoints_;
   std::vector<TexelRect> covered_, changed_;
   TessellationBuffers tessellation_;
 };

@@ -3,20 +3,22 @@
 #include <vector>
 
 #include "math/Transform.h"
+#include "passes/PatchTessellation.h"
 #include "passes/QuadricUniforms.h"
 #include "passes/ShadingUniforms.h"
 
 namespace specula::passes {
-
-namespace {
-}
 
 Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
   auto program = gl::ShaderProgram::build(gl, {"scene/scene.vert", "scene/scene.frag"});
   if (!program) return Error{program.error()};
   auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "scene/scene-quadric.frag"});
   if (!quadric) return Error{quadric.error()};
-  return std::unique_ptr<ScenePass>(new ScenePass(gl, std::move(program.value()), std::move(quadric.value())));
+  auto patches = gl::ShaderProgram::build(
+      gl, {"common/bezier-patch.vert", "common/bezier-patch.tesc", "common/bezier-patch.tese", "scene/scene.frag"});
+  if (!patches) return Error{patches.error()};
+  return std::unique_ptr<ScenePass>(
+      new ScenePass(gl, std::move(program.value()), std::move(quadric.value()), std::move(patches.value())));
 }
 
 void ScenePass::execute(const FrameContext& frame) {
@@ -41,7 +43,7 @@ void ScenePass::execute(const FrameContext& frame) {
   gl.Enable(GL_STENCIL_TEST);
   gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 
-  for (const gl::ShaderProgram* program : {&program_, &quadric_}) {
+  for (const gl::ShaderProgram* program : {&program_, &quadric_, &patches_}) {
     program->use();
     program->set("worldToClip", frame.view.worldToClip());
     program->set("eyePosition", frame.pose.camera.eye);
@@ -52,10 +54,13 @@ void ScenePass::execute(const FrameContext& frame) {
     if (!boundsInFrustum(frame.worldBounds[i], frame.pose.camera, frame.view.aspect, 0.0f)) continue;
     const scene::SceneObject& object = frame.scene.objects[i];
     const bool quadric = object.mirror && object.mirror->exactQuadric();
-    const gl::ShaderProgram& program = quadric ? quadric_ : program_;
+    const bool patches = !frame.scene.meshes[object.mesh].patches.empty();
+    const gl::ShaderProgram& program = quadric ? quadric_ : patches ? patches_ : program_;
     program.use();
     program.set("objectToWorld", frame.pose.objectToWorld[i]);
     program.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
+    if (patches)
+      setPatchView(program, frame.pose.objectToWorld[i], frame.view.worldToClip(), {frame.target.width(), frame.target.height()});
     const scene::Material& material = frame.scene.materials[object.material];
     setMaterial(program, material);
     program.set("surfaceWeight", stencil[i] != 0 ? 1.0f - material.reflectivity : 1.0f);
@@ -64,6 +69,8 @@ void ScenePass::execute(const FrameContext& frame) {
       setMirrorQuadric(program, *object.mirror, frame.pose.objectToWorld[i]);
       gl.BindVertexArray(emptyVertexArray_.id());
       gl.DrawArrays(GL_TRIANGLES, 0, kQuadricProxyVertices);
+    } else if (patches) {
+      frame.meshes.drawPatches(object.mesh);
     } else {
       frame.meshes.draw(object.mesh);
     }

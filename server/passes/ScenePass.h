@@ -1,7 +1,8 @@
 #pragma once
 // Draws every object as seen directly from the eye, lit, into colour and depth.
 // Mirrors are drawn with their own (base) colour; reflections are added by later passes. A mirror
-// with an exact quadric is ray-cast per fragment, so its outline is the quadric's, not its mesh's.
+// with an exact quadric is ray-cast per fragment, so its outline is the quadric's, not its mesh's;
+// a parametric mesh is tessellated for the view (passes/PatchTessellation.h).
 #include <memory>
 
 #include "base/Result.h"
@@ -19,10 +20,11 @@ class ScenePass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  ScenePass(const gl::GlApi& gl, gl::ShaderProgram program, gl::ShaderProgram quadric)
-      : program_(std::move(program)), quadric_(std::move(quadric)), emptyVertexArray_(gl) {}
+  ScenePass(const gl::GlApi& gl, gl::ShaderProgram program, gl::ShaderProgram quadric, gl::ShaderProgram patches)
+      : program_(std::move(program)), quadric_(std::move(quadric)), patches_(std::move(patches)), emptyVertexArray_(gl) {}
   gl::ShaderProgram program_;
   gl::ShaderProgram quadric_;  // exact quadrics inside their proxy boxes
+  gl::ShaderProgram patches_;  // parametric meshes, tessellated for the view
   gl::GlVertexArray emptyVertexArray_;
 };
 

@@ -70,6 +70,7 @@ void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame
   const scene::MirrorInfo& info = *frame.scene.objects[mirror.mirrorObject].mirror;
   setMirrorQuadric(program, info, frame.pose.objectToWorld[mirror.mirrorObject]);
   setMirrorExtrusion(program, info, frame.pose.objectToWorld[mirror.mirrorObject], frame.settings.solveExtrusions);
+  program.set("exactGBuffer", frame.scene.meshes[frame.searchMesh(mirror.mirrorObject)].patches.empty() ? 0 : 1);
   if (frame.settings.search == SearchStrategy::ExplosionMap) setExplosionMapFrame(program, frame, mirror);
 }
 

@@ -70,6 +70,16 @@ Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> s
 
 Renderer::~Renderer() = default;
 
+Result<passes::PatchTessellationMeasure> Renderer::measurePatchTessellation(const scene::ScenePose& pose,
+                                                                            const RenderedFrame& frame) {
+  if (!patchProbe_) {
+    auto probe = passes::PatchTessellationProbe::create(context_.api());
+    if (!probe) return Error{probe.error()};
+    patchProbe_.emplace(std::move(probe.value()));
+  }
+  return patchProbe_->measure(*scene_, pose, meshes_, frame.view.worldToClip(), {frame.width, frame.height});
+}
+
 Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene) {
   const gl::GlApi& gl = context.api();
   passes::ReflectionSlots slots = passes::ReflectionSlots::forScene(*scene);

@@ -15,6 +15,7 @@
 #include "math/Bounds.h"
 #include "passes/FrameContext.h"
 #include "passes/Pass.h"
+#include "passes/PatchTessellation.h"
 #include "passes/ReflectionResources.h"
 #include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
@@ -90,6 +91,9 @@ class Renderer {
   // The last frame's tessellated vertices (midpoints included), when it was tessellated.
   std::vector<passes::FinishedVertex> readTessellatedVertices() const { return reflections_.tessellation().readFinished(); }
   const passes::ReflectionSlots& reflectionSlots() const { return slots_; }
+  // What the patch tessellation makes of the scene's parametric meshes in `frame`'s view (rendered
+  // at `pose`): triangles and their areas in pixels. Fails only if the probe's shaders do not build.
+  Result<passes::PatchTessellationMeasure> measurePatchTessellation(const scene::ScenePose& pose, const RenderedFrame& frame);
   const scene::Scene& scene() const { return *scene_; }
 
  private:
@@ -107,6 +111,7 @@ class Renderer {
   passes::VirtualObjectsPass* virtualObjects_ = nullptr;  // in passes_
   std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
   std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
+  std::optional<passes::PatchTessellationProbe> patchProbe_;  // built on first use
   bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock
 };
 

@@ -1,8 +1,12 @@
 // A bicubic Bézier patch (math::BezierPatch): 16 control points row-major, u along a row. The GLSL
-// twin of BezierPatch::sample for the exact mirror G-buffer; a GL test compares the two.
+// twin of BezierPatch::sample for the patch tessellation and the exact mirror G-buffer (checked
+// against the ray tracer's patches in tests/gl/ParametricMirrorTest.cpp).
 
-// Position and partial derivatives at (u, v) of the patch whose control points start at `first`
-// in `points` (a storage buffer the including shader declares as vec4 patchPoints[]).
+layout(std430, binding = 1) readonly buffer PatchPoints {
+  vec4 patchPoints[];  // 16 per patch, object space (gl::GpuMeshes::kPatchPointsBinding)
+};
+
+// Position and partial derivatives at (u, v) of the patch whose control points start at `first`.
 void bezierPatchSample(int first, vec2 uv, out vec3 position, out vec3 du, out vec3 dv) {
   vec2 s = 1.0 - uv;
   vec4 bu = vec4(s.x * s.x * s.x, 3.0 * uv.x * s.x * s.x, 3.0 * uv.x * uv.x * s.x, uv.x * uv.x * uv.x);

@@ -28,6 +28,14 @@ const float kStalledResidual = 0.1;  // normal and bisector still this far apart
 // far apart (sine), or as far as the normal turns from one texel to the next on a mirror a few texels
 // wide: such a vertex has no reflection point in the part.
 const float kNoReflectionResidual = 0.05;
+// Where the G-buffer holds the exact surface (a parametric mirror's patches), the refinement reaches
+// a true reflection point, so more is asked: a refined point off the outline must keep normal and
+// bisector within kNoReflectionResidual, and one held on the outline within kOutlineResidual or
+// half the normal's turn to its smoothest neighbour texel (a reflection point inside the outline
+// texel is that close to its centre's). The thin spout and handle turn their normals by tenths a
+// texel, which the mesh rule's whole turn let pass for points 50 px from any reflection.
+const float kOutlineResidual = 0.01;
+uniform int exactGBuffer;
 
 const ivec2 kNeighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),  // crosshair first
                                       ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
@@ -400,15 +408,20 @@ bool refineOnQuadric(vec3 start, out vec3 position, out vec3 normal) {
   return length(tangentialBisectorOnQuadric(u)) < kStalledResidual;
 }
 
-// How far the G-buffer normal turns between the texel and its neighbours (on the mirror).
-float normalTurnPerTexel(ivec2 texel) {
+// How far the G-buffer normal turns from the texel to its neighbours on the mirror: to the
+// steepest, or to the smoothest (`smoothest`: then a crease, where the normal jumps across and no
+// reflection point lies, does not count). 0 for a lone texel.
+float normalTurnPerTexel(ivec2 texel, bool smoothest) {
   vec3 n0 = texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz;
-  float turn = 0.0;
+  float steepest = 0.0, least = 2.0;
   for (int k = 0; k < 4; ++k) {
     ivec2 at = texel + kNeighbours[k];
-    if (objectiveAt(at, 0) > kInvalid) turn = max(turn, length(texelFetch(gbufferNormal, ivec3(at, layer), 0).xyz - n0));
+    if (objectiveAt(at, 0) <= kInvalid) continue;
+    float turn = length(texelFetch(gbufferNormal, ivec3(at, layer), 0).xyz - n0);
+    steepest = max(steepest, turn);
+    least = min(least, turn);
   }
-  return turn;
+  return smoothest ? (least < 2.0 ? least : 0.0) : steepest;
 }
 
 uniform int explosionMap;     // 1: vertices are placed by explosion-map look-ups, not searched
@@ -591,9 +604,11 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
     // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
     // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
     // which mirroring would magnify by about 2|V − R| at grazing reflection points.
-    bool hidden = analytic != 0 ? hiddenExactly
-                                : dot(vertexWorld - r, n) < 0.0 ||
-                                      (blocked && length(tangentialBisector(r, n)) > max(kNoReflectionResidual, normalTurnPerTexel(texel)));
+    float residual = length(tangentialBisector(r, n));
+    bool noReflection = exactGBuffer != 0 ? residual > (blocked ? max(kOutlineResidual, 0.5 * normalTurnPerTexel(texel, true))
+                                                                : kNoReflectionResidual)
+                                          : blocked && residual > max(kNoReflectionResidual, normalTurnPerTexel(texel, false));
+    bool hidden = analytic != 0 ? hiddenExactly : dot(vertexWorld - r, n) < 0.0 || noReflection;
     if (hidden) {
       flags |= kReflectionHidden;
       vec3 silhouette, silhouetteNormal;

@@ -1,15 +1,18 @@
 #version 430 core
-// Mirror surface samples for the search from a parametric mirror: its grid is drawn for coverage
-// and depth, and every texel takes position and normal from its exact Bézier patch where the eye's
-// ray through the texel meets it (Newton's method on (u, v, t) from the interpolated (u, v)), so the
-// grid's facets and interpolated normals add no error. Parts as in mirror-gbuffer-mesh.frag.
+// Mirror surface samples for the search from a parametric mirror, drawn through the patch
+// tessellation (common/bezier-patch.tesc, .tese): every texel takes position and normal from its exact
+// Bézier patch where the eye's ray through the texel meets it (Newton's method on (u, v, t) from the
+// interpolated (u, v)), so the tessellation's facets add no error. Parts as in
+// mirror-gbuffer-mesh.frag, each texel taking the part of the grid triangle (scene::parametricMesh)
+// its (u, v) falls in: the grid is what the parts were split on.
 
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec2 surfaceUv;
+flat in int patchIndex;
 
 uniform int part;  // the part this layer holds; -1 when the mirror is one part
-uniform int trianglesPerPatch;  // of the grid (scene::parametricMesh): triangle t lies on patch t / this
+uniform int patchSegments;  // grid quads per patch side of the parametric mesh
 uniform mat4 objectToWorld;
 uniform mat4 worldToObject;
 uniform mat3 normalToWorld;
@@ -18,20 +21,32 @@ uniform vec3 eyePosition;  // world
 layout(std430, binding = 0) readonly buffer TriangleParts {
   uint packedParts[];  // the part of each triangle of the mesh, four bytes to a uint
 };
-layout(std430, binding = 1) readonly buffer PatchPoints {
-  vec4 patchPoints[];  // 16 per patch, object space
-};
 
 #include "common/bezier-patch.glsl"
 
 layout(location = 0) out vec4 outPosition;  // w = 1 marks a mirror texel
 layout(location = 1) out vec4 outNormal;
 
+// The grid triangle of the parametric mesh at (u, v) on patch `patchIndex`: quad (i, j) holds
+// triangles (a, b, d) below its diagonal and (a, d, c) above it (math::tessellatePatchGrid).
+int gridTriangle(vec2 uv) {
+  vec2 cell = uv * float(patchSegments);
+  ivec2 quad = clamp(ivec2(floor(cell)), ivec2(0), ivec2(patchSegments - 1));
+  vec2 inQuad = cell - vec2(quad);
+  return 2 * (patchIndex * patchSegments * patchSegments + quad.y * patchSegments + quad.x) + (inQuad.x < inQuad.y ? 1 : 0);
+}
+
 void main() {
-  bool inPart = part < 0 || int((packedParts[gl_PrimitiveID >> 2] >> (8 * (gl_PrimitiveID & 3))) & 0xFFu) == part;
-  int first = 16 * (gl_PrimitiveID / trianglesPerPatch);
-  // The texel's eye ray in object space passes through the grid's point; the patch lies within a
-  // fraction of a texel of it, so a few Newton steps from its (u, v) reach the exact surface.
+  // Texels of the other parts only give this layer its depth: no need to evaluate them exactly.
+  int rasterized = gridTriangle(clamp(surfaceUv, 0.0, 1.0));
+  if (part >= 0 && int((packedParts[rasterized >> 2] >> (8 * (rasterized & 3))) & 0xFFu) != part) {
+    outPosition = vec4(worldPosition, 0.0);
+    outNormal = vec4(normalize(worldNormal), 0.0);
+    return;
+  }
+  int first = 16 * patchIndex;
+  // The texel's eye ray in object space passes through the tessellation's point; the patch lies
+  // within a fraction of a texel of it, so a few Newton steps from its (u, v) reach the exact surface.
   vec3 eye = (worldToObject * vec4(eyePosition, 1.0)).xyz;
   vec3 direction = (worldToObject * vec4(worldPosition, 1.0)).xyz - eye;
   vec2 uv = clamp(surfaceUv, 0.0, 1.0);
@@ -47,8 +62,10 @@ void main() {
   }
   bezierPatchSample(first, uv, position, du, dv);
   vec3 normal = cross(du, dv);
-  // At a pole (a collapsed edge) the patch has no normal of its own; the grid's is its limit.
+  // At a pole (a collapsed edge) the patch has no normal of its own; the tessellation's is its limit.
   vec3 worldN = dot(normal, normal) > 1e-8 * dot(du, du) * dot(dv, dv) ? normalToWorld * normal : worldNormal;
+  int triangle = gridTriangle(uv);
+  bool inPart = part < 0 || int((packedParts[triangle >> 2] >> (8 * (triangle & 3))) & 0xFFu) == part;
   outPosition = vec4((objectToWorld * vec4(position, 1.0)).xyz, inPart ? 1.0 : 0.0);
   outNormal = vec4(normalize(worldN), 0.0);
 }

@@ -3,7 +3,6 @@
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;  // (u, v) on its patch, for a parametric mesh
 
 uniform mat4 objectToWorld;
 uniform mat3 normalToWorld;
@@ -11,12 +10,10 @@ uniform mat4 worldToClip;  // the eye's projection widened by the G-buffer margi
 
 out vec3 worldPosition;
 out vec3 worldNormal;
-out vec2 surfaceUv;
 
 void main() {
   vec4 world = objectToWorld * vec4(inPosition, 1.0);
   worldPosition = world.xyz;
   worldNormal = normalToWorld * inNormal;
-  surfaceUv = inUv;
   gl_Position = worldToClip * world;
 }

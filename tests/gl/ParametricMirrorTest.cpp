@@ -1,5 +1,5 @@
-// Parametric mirrors (issue #19): the chrome Utah teapot, 32 Bézier patches drawn as their grid with
-// every G-buffer texel evaluated on the exact patch, against the ray tracer (which intersects the
+// Parametric mirrors (issue #19): the chrome Utah teapot, 32 Bézier patches tessellated for the view
+// with every G-buffer texel evaluated on the exact patch, against the ray tracer (which intersects the
 // patches themselves) and its reflection points against the exact patch solver (itself held to the
 // law of reflection in tests/unit/ParametricSurfaceTest.cpp): searched, the general path, and as
 // the planner renders it by default.
@@ -50,15 +50,17 @@ TEST(ParametricMirror, SearchedTeapotMatchesTheRayTracedPatches) {
   settings.rayCast = passes::RayCastRule::Never;
   const Measured measured = measure(settings);
   EXPECT_GT(measured.points.pixels.size(), 500u);
-  // Measured 0.09 px. The tail (p90 59 px) has no cause found yet (README, Known limits), so only
-  // the median is held here.
-  EXPECT_LE(measured.points.percentile(0.5), 0.2);
-  // Measured 3.46 %: where a minified checker reflects off the knob's neck and the spout, the two
+  // Measured p50 0.035 px, p90 1.3 px (59 px before the search held points on the thin spout and
+  // handle to the exact G-buffer's residual, search-core.glsl); the rest of the tail is README's
+  // Known limits.
+  EXPECT_LE(measured.points.percentile(0.5), 0.1);
+  EXPECT_LE(measured.points.percentile(0.9), 3.0);
+  // Measured 3.75 %: where a minified checker reflects off the knob's neck and the spout, the two
   // point-sampled images disagree; issue #19's 1.5 % is not reached yet.
   EXPECT_LE(measured.worstMismatch, 0.045);
 }
 
 TEST(ParametricMirror, DefaultPlanMatchesTheRayTracedPatches) {
   const Measured measured = measure(passes::ReflectionSettings{});
-  EXPECT_LE(measured.worstMismatch, 0.04);  // measured 3.09 %: the same places
+  EXPECT_LE(measured.worstMismatch, 0.04);  // measured 3.35 %: the same places
 }

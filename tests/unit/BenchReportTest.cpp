@@ -224,3 +224,19 @@ TEST(AccuracySweep, MeshMirrorsApproximatingAnExactShapeGetMeshResolutionRows) {
   }
   EXPECT_EQ(coarse.meshes[coarse.objects[1].mesh].name, mesh.meshes[mesh.objects[1].mesh].name) << "other objects keep their meshes";
 }
+
+TEST(BenchReport, PatchTessellationAtEachDistanceHasItsColumnsAndLine) {
+  bench::SceneBenchResult teapot = measured("teapot");
+  teapot.patchTessellation = {{1, 14137, 1.2, 6.5, 24.1}, {2, 4074, 0.9, 4.8, 23.4}, {4, 1520, 0.4, 2.7, 14.5}};
+  const std::vector<bench::SceneBenchResult> results = {teapot, measured("plain")};
+  const auto csv = lines(bench::formatCsv(results));
+  EXPECT_NE(csv[0].find(",patch_triangles_at_distance_x1,patch_area_p10_px_at_distance_x1,"), std::string::npos) << csv[0];
+  EXPECT_NE(csv[1].find(",14137,1.20,6.50,24.10,4074,0.90,4.80,23.40,1520,0.40,2.70,14.50,"), std::string::npos) << csv[1];
+  EXPECT_NE(csv[2].find(",0" + std::string(13, ',') + "20.50,"), std::string::npos)
+      << "no patches: twelve empty cells between the point errors and the reference " << csv[2];
+  const std::string table = bench::formatTable(results);
+  EXPECT_NE(table.find("patch tessellation (last pose, camera distance ×): 1: 14137 triangles, pixel area 1.2/6.5/24.1;"),
+            std::string::npos)
+      << table;
+  EXPECT_EQ(table.find("patch tessellation", table.find("plain")), std::string::npos) << "no line without patches";
+}

@@ -49,7 +49,10 @@ struct ExactMirror {
   std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex,
                                                const glm::dvec3& searched) const {
     if (const auto* solver = std::get_if<std::shared_ptr<const math::PatchReflectionSolver>>(&shape)) {
-      const std::vector<math::PatchPoint> points = (*solver)->solve(eye, vertex);
+      std::vector<math::PatchPoint> points = (*solver)->solve(eye, vertex);
+      // Newton's method in double precision from by the searched point finds a solution there if
+      // there is one, even one the grid's starts missed; the search's own answer is not trusted.
+      if (const auto local = (*solver)->solveNear(eye, vertex, searched)) points.push_back(*local);
       if (points.empty()) return std::nullopt;
       const auto nearest = std::min_element(points.begin(), points.end(), [&](const auto& a, const auto& b) {
         return glm::length(a.position - searched) < glm::length(b.position - searched);

@@ -24,6 +24,8 @@ class GpuMeshes {
   // Draws mesh `index`'s Bézier patches, one GL patch of one vertex each (the tessellation shaders
   // read patch gl_PrimitiveID's control points from kPatchPointsBinding), with the program bound.
   void drawPatches(std::size_t index) const;
+  // A parametric mesh's control points buffer, for shaders that bind it themselves.
+  GLuint patchPointsBuffer(std::size_t index) const { return meshes_.at(index).patchPoints.value().id(); }
   std::size_t size() const { return meshes_.size(); }
   // The mesh's vertex buffer (scene::Vertex records), for compute passes that read it as storage.
   GLuint vertexBuffer(std::size_t index) const { return meshes_.at(index).vertices.id(); }

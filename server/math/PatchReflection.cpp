@@ -67,6 +67,17 @@ std::optional<PatchPoint> PatchReflectionSolver::refine(std::size_t patch, glm::
   return std::nullopt;
 }
 
+std::optional<PatchPoint> PatchReflectionSolver::solveNear(const glm::dvec3& eye, const glm::dvec3& vertex,
+                                                          const glm::dvec3& near) const {
+  if (!finite(eye) || !finite(vertex) || !finite(near) || samples_.empty()) return std::nullopt;
+  std::size_t nearest = 0;
+  for (std::size_t i = 1; i < samples_.size(); ++i)
+    if (glm::length(samples_[i].position - near) < glm::length(samples_[nearest].position - near)) nearest = i;
+  const auto perPatch = static_cast<std::size_t>(side_ * side_);
+  const auto inPatch = static_cast<int>(nearest % perPatch);
+  return refine(nearest / perPatch, {(inPatch % side_ + 0.5) / side_, (inPatch / side_ + 0.5) / side_}, eye, vertex);
+}
+
 std::vector<PatchPoint> PatchReflectionSolver::solve(const glm::dvec3& eye, const glm::dvec3& vertex) const {
   std::vector<PatchPoint> found;
   if (!finite(eye) || !finite(vertex)) return found;

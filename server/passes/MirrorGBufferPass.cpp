@@ -55,8 +55,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
 
   gl.BindFramebuffer(GL_FRAMEBUFFER, resources.framebuffer());
   gl.Viewport(0, 0, size.x, size.y);
-  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  gl.DrawBuffers(2, drawBuffers);
+  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   gl.Disable(GL_FRAMEBUFFER_SRGB);  // positions and normals are data, not colours
   gl.Disable(GL_STENCIL_TEST);
   gl.Disable(GL_BLEND);
@@ -78,6 +77,10 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.positionTexture(), 0, mirror->layer);
     gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, resources.normalTexture(), 0, mirror->layer);
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, resources.depthTexture(), 0);
+    // A parametric mirror also records each texel's (u, v, patch) for the search's exact refinement.
+    const bool parametric = !frame.scene.meshes[frame.searchMesh(mirror->mirrorObject)].patches.empty();
+    if (parametric) gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, resources.surfaceTexture(), 0, mirror->layer);
+    gl.DrawBuffers(parametric ? 3 : 2, drawBuffers);
     const TexelRect rect = projectedRect(frame.worldBounds[mirror->mirrorObject], worldToClip, size);
     const TexelRect changed = rect.united(resources.coveredRect(mirror->layer));
     resources.coveredRect(mirror->layer) = rect;
@@ -89,6 +92,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     gl.Scissor(changed.low.x, changed.low.y, changed.high.x - changed.low.x, changed.high.y - changed.low.y);
     gl.ClearBufferfv(GL_COLOR, 0, zero);
     gl.ClearBufferfv(GL_COLOR, 1, zero);
+    if (parametric) gl.ClearBufferfv(GL_COLOR, 2, zero);
     gl.ClearBufferfv(GL_DEPTH, 0, &farDepth);
     if (rect.empty()) continue;
     gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
@@ -121,6 +125,7 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     frame.meshes.drawPatches(searchMesh);
   }
   gl.Disable(GL_SCISSOR_TEST);
+  gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, 0, 0, 0);
   const GLenum single[] = {GL_COLOR_ATTACHMENT0};
   gl.DrawBuffers(1, single);
 }

@@ -45,6 +45,11 @@ ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene
     upload(gl, triangleParts_.emplace(mirrorObject, gl::GlBuffer(gl)).first->second, packed);
   }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  for (const MirrorSlots& mirror : slots.mirrors) {
+    const scene::MirrorInfo& info = *scene.objects[mirror.mirrorObject].mirror;
+    const std::size_t searched = info.closedTwinMesh ? *info.closedTwinMesh : scene.objects[mirror.mirrorObject].mesh;
+    parametricMirror_ = parametricMirror_ || !scene.meshes[searched].patches.empty();
+  }
   resetCoherence();
   covered_.resize(slots.mirrors.size());
   changed_.resize(slots.mirrors.size());
@@ -95,6 +100,14 @@ Status ReflectionResources::prepare(int frameWidth, int frameHeight, glm::ivec2 
     gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
     gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, coarseLevel_ + 1, textureFormat(), size.x, size.y, layers);
     gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  surface_.reset();
+  if (parametricMirror_) {
+    surface_.emplace(*gl_);
+    gl_->BindTexture(GL_TEXTURE_2D_ARRAY, surface_->id());
+    gl_->TexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RGBA32F, size.x, size.y, layers);
+    gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl_->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   gl_->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
@@ -225,6 +238,8 @@ ReflectionResources::RayHierarchyLevel ReflectionResources::readRayHierarchyLeve
 }
 
 void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resources) {
+  gl.ActiveTexture(GL_TEXTURE0 + kGBufferSurfaceUnit);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.surfaceTexture());
   gl.ActiveTexture(GL_TEXTURE1);
   gl.BindTexture(GL_TEXTURE_2D_ARRAY, resources.normalTexture());
   gl.ActiveTexture(GL_TEXTURE0);
@@ -234,6 +249,7 @@ void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resourc
 void setGBufferSamplers(const gl::ShaderProgram& program) {
   program.set("gbufferPosition", 0);
   program.set("gbufferNormal", 1);
+  program.set("gbufferSurface", static_cast<int>(kGBufferSurfaceUnit));
 }
 
 void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources) {

@@ -57,6 +57,9 @@ class ReflectionResources {
   glm::ivec2 levelSize(int level) const { return glm::max(size_ >> level, glm::ivec2(1)); }
   GLuint positionTexture() const { return position_.id(); }
   GLuint normalTexture() const { return normal_.id(); }
+  // (u, v, patch, 1) of each texel on a parametric mirror, one level, RGBA32F; 0 when no mirror of
+  // the scene is parametric (the texture is not allocated).
+  GLuint surfaceTexture() const { return surface_ ? surface_->id() : 0; }
   GLuint framebuffer() const { return framebuffer_.id(); }
   GLuint depthTexture() const { return depth_.id(); }
   GLuint reflectedVertices() const { return reflected_.id(); }
@@ -117,6 +120,8 @@ class ReflectionResources {
   GBufferPrecision precision_ = GBufferPrecision::Float32;
   int coarseLevel_ = 0;
   gl::GlTexture position_, normal_, depth_;
+  std::optional<gl::GlTexture> surface_;
+  bool parametricMirror_ = false;  // some mirror's search mesh has patches: surface_ is needed
   std::optional<gl::GlTexture> rayHierarchySpheres_, rayHierarchyCones_;  // empty until a search uses them
   int rayHierarchyTop_ = 0;
   std::optional<gl::GlTexture> explosionPositions_, explosionNormals_, explosionDepth_;  // empty until a map is drawn
@@ -133,9 +138,12 @@ class ReflectionResources {
 // Sets the uniforms of shaders/common/gbuffer-texel.glsl: where a frame pixel lies in the G-buffer.
 void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources);
 
-// Binds the G-buffer's position and normal textures to texture units 0 and 1, leaving unit 0 active.
+// The texture unit of the G-buffer's surface coordinates (units 2 to 5 hold the strategies' arrays).
+inline constexpr GLuint kGBufferSurfaceUnit = 6;
+// Binds the G-buffer's position and normal textures to texture units 0 and 1 and its surface
+// coordinates to kGBufferSurfaceUnit, leaving unit 0 active.
 void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resources);
-// Points the program's (in use) gbufferPosition and gbufferNormal samplers at those units.
+// Points the program's (in use) gbufferPosition, gbufferNormal and gbufferSurface samplers at those units.
 void setGBufferSamplers(const gl::ShaderProgram& program);
 
 }  // namespace specula::passes

@@ -14,6 +14,7 @@ constexpr GLuint kGroupSize = 64;  // local_size_x of search.comp
 // from: a closed convex mirror has one best point, other parts may have several local ones.
 constexpr int kConvexColdScanSide = 8, kColdScanSide = 16;
 constexpr int kConvexColdCandidates = 1, kColdCandidates = 3;
+constexpr GLuint kSearchPatchPointsBinding = 11;  // PATCH_POINTS_BINDING in common/search-core.glsl
 }  // namespace
 
 Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {
@@ -70,7 +71,13 @@ void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame
   const scene::MirrorInfo& info = *frame.scene.objects[mirror.mirrorObject].mirror;
   setMirrorQuadric(program, info, frame.pose.objectToWorld[mirror.mirrorObject]);
   setMirrorExtrusion(program, info, frame.pose.objectToWorld[mirror.mirrorObject], frame.settings.solveExtrusions);
-  program.set("exactGBuffer", frame.scene.meshes[frame.searchMesh(mirror.mirrorObject)].patches.empty() ? 0 : 1);
+  const std::size_t searchMesh = frame.searchMesh(mirror.mirrorObject);
+  const bool parametric = !frame.scene.meshes[searchMesh].patches.empty();
+  program.set("exactGBuffer", parametric ? 1 : 0);
+  if (parametric) {
+    program.set("patchObjectToWorld", frame.pose.objectToWorld[mirror.mirrorObject]);
+    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSearchPatchPointsBinding, frame.meshes.patchPointsBuffer(searchMesh));
+  }
   if (frame.settings.search == SearchStrategy::ExplosionMap) setExplosionMapFrame(program, frame, mirror);
 }
 

@@ -2,8 +2,13 @@
 // twin of BezierPatch::sample for the patch tessellation and the exact mirror G-buffer (checked
 // against the ray tracer's patches in tests/gl/ParametricMirrorTest.cpp).
 
-layout(std430, binding = 1) readonly buffer PatchPoints {
-  vec4 patchPoints[];  // 16 per patch, object space (gl::GpuMeshes::kPatchPointsBinding)
+// The storage binding: gl::GpuMeshes::kPatchPointsBinding unless the including shader, whose own
+// buffers use that one, defines another first.
+#ifndef PATCH_POINTS_BINDING
+#define PATCH_POINTS_BINDING 1
+#endif
+layout(std430, binding = PATCH_POINTS_BINDING) readonly buffer PatchPoints {
+  vec4 patchPoints[];  // 16 per patch, object space
 };
 
 // Position and partial derivatives at (u, v) of the patch whose control points start at `first`.

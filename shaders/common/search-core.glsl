@@ -28,12 +28,12 @@ const float kStalledResidual = 0.1;  // normal and bisector still this far apart
 // far apart (sine), or as far as the normal turns from one texel to the next on a mirror a few texels
 // wide: such a vertex has no reflection point in the part.
 const float kNoReflectionResidual = 0.05;
-// Where the G-buffer holds the exact surface (a parametric mirror's patches), the refinement reaches
-// a true reflection point, so more is asked: a refined point off the outline must keep normal and
-// bisector within kNoReflectionResidual, and one held on the outline within kOutlineResidual or
-// half the normal's turn to its smoothest neighbour texel (a reflection point inside the outline
-// texel is that close to its centre's). The thin spout and handle turn their normals by tenths a
-// texel, which the mesh rule's whole turn let pass for points 50 px from any reflection.
+// Where the G-buffer holds the exact surface (a parametric mirror's patches), Newton's method on the
+// patch decides where it converges (refineOnPatch); where it does not, more is asked than of a mesh:
+// normal and bisector within kOutlineResidual, or, held on the outline, half the normal's turn to
+// its smoothest neighbour texel if that is more (a reflection point inside the outline texel is that
+// close to its centre's). The thin spout and handle turn their normals by tenths a texel, which the
+// mesh rule's whole turn let pass for points 50 px from any reflection.
 const float kOutlineResidual = 0.01;
 uniform int exactGBuffer;
 
@@ -533,6 +533,87 @@ ReflectedVertex solvedExtrusionReflection(vec3 vertex) {
   return result;
 }
 
+// A parametric mirror's exact surface (exactGBuffer = 1): each G-buffer texel's (u, v, patch), the
+// patches' control points and the mirror's placement, for refining on the patch itself.
+uniform sampler2DArray gbufferSurface;
+uniform mat4 patchObjectToWorld;
+#define PATCH_POINTS_BINDING 11
+#include "common/bezier-patch.glsl"
+
+const float kPatchConverged = 2e-5;  // sine between normal and bisector: a reflection point to float precision
+
+// The patch's point and partial derivatives at (u, v), in world space.
+void worldPatchSample(int first, vec2 uv, out vec3 position, out vec3 du, out vec3 dv) {
+  bezierPatchSample(first, uv, position, du, dv);
+  mat3 linear = mat3(patchObjectToWorld);
+  position = (patchObjectToWorld * vec4(position, 1.0)).xyz;
+  du = linear * du;
+  dv = linear * dv;
+}
+
+// (H·Su, H·Sv) with H the half vector of eye and vertex: zero exactly at a reflection point.
+vec2 reflectionCondition(int first, vec2 uv) {
+  vec3 p, du, dv;
+  worldPatchSample(first, uv, p, du, dv);
+  vec3 h = normalize(eyePosition - p) + normalize(vertexWorld - p);
+  return vec2(dot(h, du), dot(h, dv));
+}
+
+// Newton's method on the exact patch from the G-buffer's (u, v) at `texel`. 1: converged on that
+// patch to a point this layer shows (in the part, not occluded), written to position and normal;
+// -1: converged to a point the layer does not show (on another part, or behind the surface); 0:
+// no convergence on this patch (the answer may lie on a neighbour): the G-buffer's point stands.
+int refineOnPatch(ivec2 texel, out vec3 position, out vec3 normal) {
+  vec4 surface = texelFetch(gbufferSurface, ivec3(texel, layer), 0);
+  if (surface.w <= 0.0) return 0;
+  int first = 16 * int(surface.z + 0.5);
+  vec2 uv = surface.xy;
+  const float e = 1e-3;  // central differences in (u, v): float keeps ~4 digits of the Jacobian
+  int crossings = 0;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    vec3 du, dv;
+    worldPatchSample(first, uv, position, du, dv);
+    normal = cross(du, dv);
+    if (!(dot(normal, normal) > 1e-12 * dot(du, du) * dot(dv, dv))) return 0;  // a pole
+    normal = normalize(normal);
+    vec3 h = normalize(normalize(eyePosition - position) + normalize(vertexWorld - position));
+    if (length(cross(h, normal)) < kPatchConverged) {
+      vec3 at = gbufferCoordinateOf(position);
+      if (at.z <= 0.0) return -1;
+      ivec2 shown = ivec2(floor(at.xy));
+      vec4 seen = texelFetch(gbufferPosition, ivec3(shown, layer), 0);
+      if (seen.w <= 0.0 || any(lessThan(shown, ivec2(0))) || any(greaterThanEqual(shown, textureSize(gbufferPosition, 0).xy)))
+        return -1;
+      // Occluded when the texel it lands on shows a surface nearer the eye by more than a texel's depth step.
+      float depthStep = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        vec4 neighbour = texelFetch(gbufferPosition, ivec3(shown + kNeighbours[k], layer), 0);
+        if (neighbour.w > 0.0) depthStep = max(depthStep, abs(distance(eyePosition, neighbour.xyz) - distance(eyePosition, seen.xyz)));
+      }
+      return distance(eyePosition, seen.xyz) < distance(eyePosition, position) - 2.0 * depthStep - 1e-4 * distance(eyePosition, position) ? -1 : 1;
+    }
+    vec2 g = reflectionCondition(first, uv);
+    mat2 jacobian = mat2((reflectionCondition(first, uv + vec2(e, 0.0)) - reflectionCondition(first, uv - vec2(e, 0.0))) / (2.0 * e),
+                         (reflectionCondition(first, uv + vec2(0.0, e)) - reflectionCondition(first, uv - vec2(0.0, e))) / (2.0 * e));
+    if (abs(determinant(jacobian)) < 1e-20) return 0;
+    vec2 step = -inverse(jacobian) * g;
+    if (length(step) > 0.2) step *= 0.2 / length(step);  // damped: it cannot leap across the patch
+    uv += step;
+    if (all(greaterThanEqual(uv, vec2(-0.01))) && all(lessThanEqual(uv, vec2(1.01)))) continue;
+    // Off the patch: carry on from the neighbour the G-buffer shows at the edge it left by (the
+    // G-buffer doubles as the patches' adjacency), twice at most.
+    vec3 edge, unusedU, unusedV;
+    worldPatchSample(first, clamp(uv, 0.0, 1.0), edge, unusedU, unusedV);
+    vec3 at = gbufferCoordinateOf(edge);
+    if (at.z <= 0.0 || ++crossings > 2) return 0;
+    vec4 next = texelFetch(gbufferSurface, ivec3(ivec2(floor(at.xy)), layer), 0);
+    if (next.w <= 0.0 || 16 * int(next.z + 0.5) == first) return 0;
+    first = 16 * int(next.z + 0.5);
+    uv = next.xy;
+  }
+  return 0;
+}
+
 // Finds the reflection of `vertex` (world space) in the mirror on G-buffer layer `layer`;
 // state.xy is the texel reached (the next search's seed), state.z the steps, state.w the flags.
 // `retryWhenLost`: if the refinement from a seeded climb is lost, search again from the pyramid
@@ -585,7 +666,9 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
   ReflectedVertex result;
   bool refinedExactly = value > kInvalid && analytic != 0;  // r and n came from refineOnQuadric
   bool blocked = false;
-  if (!refinedExactly && (value <= kInvalid || !surfaceAt(refine(texel, blocked), r, n))) {
+  vec2 refined = vec2(texel);
+  if (!refinedExactly && value > kInvalid) refined = refine(texel, blocked);
+  if (!refinedExactly && (value <= kInvalid || !surfaceAt(refined, r, n))) {
     vec4 p = texelFetch(gbufferPosition, ivec3(texel, layer), 0);
     r = p.xyz;
     n = normalize(texelFetch(gbufferNormal, ivec3(texel, layer), 0).xyz);
@@ -604,9 +687,18 @@ ReflectedVertex searchReflection(vec3 vertex, ivec2 seed, bool useSeed, bool ret
     // analytic mirror that silhouette point is exact, so it moves smoothly. A visible vertex goes
     // on the eye's ray through R instead: the same point when R is exact, but it needs no normal,
     // which mirroring would magnify by about 2|V − R| at grazing reflection points.
+    // On the exact patch: Newton's answer decides where it converges; the residual rule elsewhere.
+    int onPatch = 0;
+    if (exactGBuffer != 0) {
+      vec3 exactR, exactN;
+      onPatch = refineOnPatch(ivec2(round(refined)), exactR, exactN);
+      if (onPatch > 0) {
+        r = exactR;
+        n = exactN;
+      }
+    }
     float residual = length(tangentialBisector(r, n));
-    bool noReflection = exactGBuffer != 0 ? residual > (blocked ? max(kOutlineResidual, 0.5 * normalTurnPerTexel(texel, true))
-                                                                : kNoReflectionResidual)
+    bool noReflection = exactGBuffer != 0 ? onPatch <= 0
                                           : blocked && residual > max(kNoReflectionResidual, normalTurnPerTexel(texel, false));
     bool hidden = analytic != 0 ? hiddenExactly : dot(vertexWorld - r, n) < 0.0 || noReflection;
     if (hidden) {

@@ -26,6 +26,7 @@ layout(std430, binding = 0) readonly buffer TriangleParts {
 
 layout(location = 0) out vec4 outPosition;  // w = 1 marks a mirror texel
 layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outSurface;  // (u, v, patch, 1) on this part's texels
 
 // The grid triangle of the parametric mesh at (u, v) on patch `patchIndex`: quad (i, j) holds
 // triangles (a, b, d) below its diagonal and (a, d, c) above it (math::tessellatePatchGrid).
@@ -42,6 +43,7 @@ void main() {
   if (part >= 0 && int((packedParts[rasterized >> 2] >> (8 * (rasterized & 3))) & 0xFFu) != part) {
     outPosition = vec4(worldPosition, 0.0);
     outNormal = vec4(normalize(worldNormal), 0.0);
+    outSurface = vec4(0.0);
     return;
   }
   int first = 16 * patchIndex;
@@ -68,4 +70,5 @@ void main() {
   bool inPart = part < 0 || int((packedParts[triangle >> 2] >> (8 * (triangle & 3))) & 0xFFu) == part;
   outPosition = vec4((objectToWorld * vec4(position, 1.0)).xyz, inPart ? 1.0 : 0.0);
   outNormal = vec4(normalize(worldN), 0.0);
+  outSurface = inPart ? vec4(uv, float(patchIndex), 1.0) : vec4(0.0);
 }

@@ -143,6 +143,28 @@ TEST(PatchReflection, TeapotReflectionPointsObeyTheLawOfReflection) {
   EXPECT_GE(found, 5);  // each vertex is seen at least once in a convex body
 }
 
+// From near a reflection point, Newton's method lands on it; from behind the mirror, on nothing.
+TEST(PatchReflection, SolvingNearAPointFindsTheReflectionThere) {
+  const math::PatchReflectionSolver solver({planePatch({-2.0, 0.0, 2.0}, {4.0, 0.0, 0.0}, {0.0, 0.0, -4.0})});
+  const glm::dvec3 eye(0.3, 1.0, 0.2), vertex(-0.5, 2.0, 0.4);
+  const glm::dvec3 expected = eye + (glm::dvec3(vertex.x, -vertex.y, vertex.z) - eye) / 3.0;
+  const auto near = solver.solveNear(eye, vertex, expected + glm::dvec3(0.3, 0.05, -0.2));
+  ASSERT_TRUE(near);
+  EXPECT_NEAR(glm::length(near->position - expected), 0.0, 1e-9);
+  EXPECT_FALSE(solver.solveNear(eye, {0.0, -1.0, 0.0}, expected));
+  // On the teapot every point it returns obeys the law of reflection, whichever sample it starts from.
+  const math::PatchReflectionSolver teapot(scene::builtin::utahTeapotPatches());
+  const glm::dvec3 teapotEye(6.0, 4.4, 6.4), teapotVertex(4.6, 0.3, 1.0);
+  int found = 0;
+  for (const math::PatchPoint& start : teapot.solve(teapotEye, teapotVertex)) {
+    const auto again = teapot.solveNear(teapotEye, teapotVertex, start.position);
+    ASSERT_TRUE(again);
+    EXPECT_NEAR(glm::length(again->position - start.position), 0.0, 1e-6);
+    ++found;
+  }
+  EXPECT_GE(found, 1);
+}
+
 TEST(UtahTeapot, ThirtyTwoPatchesStandingOnTheFloorFacingOutwards) {
   const std::vector<BezierPatch> patches = scene::builtin::utahTeapotPatches();
   ASSERT_EQ(patches.size(), 32u);

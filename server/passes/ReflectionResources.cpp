@@ -30,6 +30,11 @@ void upload(const gl::GlApi& gl, const gl::GlBuffer& buffer, const std::vector<T
                 data.empty() ? nullptr : data.data(), GL_STATIC_DRAW);
 }
 
+// How many of a parametric mesh's grid deviations a ray cast from its exact surface skips of its own
+// grid: utah-teapot at 320x240 had 418 pixels off the ray tracer with none skipped (speckles of its
+// own colour where its lid meets the knob), 69 skipping one deviation, 60 skipping four.
+constexpr float kGridDeviationsSkipped = 4.0f;
+
 }  // namespace
 
 ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots)
@@ -70,8 +75,10 @@ const ReflectionResources::MeshBvh& ReflectionResources::meshBvh(std::uint32_t m
   upload(*gl_, buffers.nodes, bvh.nodes());
   upload(*gl_, buffers.triangles, bvh.triangles());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  // Float rounding of the start point, well below any feature of the mesh.
-  buffers.minDistance = 1e-4f * std::max(bounds.radius(), 1e-30f);
+  // Float rounding of the start point, well below any feature of the mesh; for a parametric mesh, a
+  // ray starts on the exact surface and may meet the grid's chords a few deviations along, grazing.
+  buffers.minDistance = std::max(1e-4f * std::max(bounds.radius(), 1e-30f),
+                                 kGridDeviationsSkipped * static_cast<float>(source.gridDeviation));
   return buffers;
 }
 

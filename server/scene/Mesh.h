@@ -24,6 +24,9 @@ struct Mesh {
   // patch after patch, with uv = (u, v) on the triangle's patch.
   std::vector<math::BezierPatch> patches{};
   int patchSegments = 0;
+  // How far the grid's triangles stray from the exact surface (object space; 0 for other meshes): a
+  // ray leaving the exact surface can meet the grid's chords within about this of its start.
+  double gridDeviation = 0.0;
 
   std::size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -165,6 +165,17 @@ TEST(PatchReflection, SolvingNearAPointFindsTheReflectionThere) {
   EXPECT_GE(found, 1);
 }
 
+// A grid's chords stray from a smooth surface by the square of their length: half the segments,
+// four times the deviation; a flat patch's grid lies on it.
+TEST(ParametricMesh, GridDeviationFallsWithTheSquareOfTheSegments) {
+  const scene::Mesh coarse = scene::parametricMesh("teapot", scene::builtin::utahTeapotPatches(), 8);
+  const scene::Mesh fine = scene::parametricMesh("teapot", scene::builtin::utahTeapotPatches(), 16);
+  EXPECT_GT(fine.gridDeviation, 0.0);
+  EXPECT_NEAR(coarse.gridDeviation / fine.gridDeviation, 4.0, 1.0);
+  const scene::Mesh flat = scene::parametricMesh("plane", {planePatch({-2.0, 0.0, 2.0}, {4.0, 0.0, 0.0}, {0.0, 0.0, -4.0})}, 4);
+  EXPECT_NEAR(flat.gridDeviation, 0.0, 1e-12);
+}
+
 TEST(UtahTeapot, ThirtyTwoPatchesStandingOnTheFloorFacingOutwards) {
   const std::vector<BezierPatch> patches = scene::builtin::utahTeapotPatches();
   ASSERT_EQ(patches.size(), 32u);

@@ -2,6 +2,7 @@
 # The one list of Specula's build and run dependencies (Debian 12 packages).
 # Used by the README, .ci/run and both Dockerfiles, so they never disagree.
 #   docker/install-deps.sh           build + runtime + test dependencies
+#   docker/install-deps.sh --build   build + runtime: enough to build and run specula (no browser, no X)
 #   docker/install-deps.sh --runtime only what the built binaries need at run time
 set -euo pipefail
 
@@ -16,13 +17,23 @@ build_packages=(
   libglm-dev libegl-dev libgl-dev libosmesa6-dev libglfw3-dev
   libturbojpeg0-dev libboost-dev libprotobuf-dev protobuf-compiler
   libembree-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
-  libgtest-dev
+  libgtest-dev          # the test suite is configured with the build (small)
+)
+test_packages=(
   chromium xvfb xauth   # tests: the browser client in headless Chromium, specula-view under Xvfb
 )
 
+mode="${1:-}"
+case "$mode" in
+  ""|--build|--runtime) ;;
+  *) echo "install-deps: unknown option '$mode'; use no option (everything), --build or --runtime" >&2; exit 2 ;;
+esac
 packages=("${runtime_packages[@]}")
-if [[ "${1:-}" != "--runtime" ]]; then
+if [[ "$mode" != "--runtime" ]]; then
   packages+=("${build_packages[@]}")
+fi
+if [[ -z "$mode" ]]; then
+  packages+=("${test_packages[@]}")
   # The browser test drives Chromium from Node >= 20 (its WebSocket); keep a newer Node if one is there.
   command -v node >/dev/null || packages+=(nodejs)
 fi

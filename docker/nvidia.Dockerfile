@@ -6,7 +6,7 @@
 #   then open http://localhost:8080/?token=change-me
 FROM debian:bookworm-slim AS build
 COPY docker/install-deps.sh /src/docker/install-deps.sh
-RUN /src/docker/install-deps.sh
+RUN /src/docker/install-deps.sh --build
 COPY . /src
 RUN cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSPECULA_BUILD_TESTS=OFF \
       -DSPECULA_WEB_ROOT=/usr/share/specula/web \

@@ -28,7 +28,7 @@ constexpr int kMaxFrames = 10000;
 
 CommandLine benchOptions() {
   std::vector<OptionSpec> specs = {
-      {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "all built-in scenes"},
+      {"scenes", "LIST", "comma-separated built-in scene names, glTF files (.gltf, .glb) or JSON scene files", "all built-in scenes"},
       {"size", "WxH", "frame size in pixels", "640x480"},
       {"frames", "N", "warm frames measured after the cold one", "60"},
       {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
@@ -37,10 +37,11 @@ CommandLine benchOptions() {
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
   };
+  for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
-      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
+      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
       "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
@@ -74,11 +75,12 @@ std::vector<std::string> sceneList(const CommandLine& options, const std::vector
 }
 
 // Loads every scene up front, so a typo fails before the long part.
-Result<std::vector<std::shared_ptr<const scene::Scene>>> loadScenes(const std::vector<std::string>& names) {
+Result<std::vector<std::shared_ptr<const scene::Scene>>> loadScenes(const std::vector<std::string>& names,
+                                                                    const scene::GltfSceneChoice& choice = {}) {
   if (names.empty()) return Error{"--scenes names no scene"};
   std::vector<std::shared_ptr<const scene::Scene>> scenes;
   for (const std::string& name : names) {
-    auto loaded = loadScene(name);
+    auto loaded = loadScene(name, choice);
     if (!loaded) return Error{loaded.error()};
     scenes.push_back(*loaded);
   }
@@ -287,7 +289,9 @@ int runBench(std::span<const std::string> arguments) {
   // Check outputs and load every scene before the long part, so a typo fails at once.
   for (const char* output : {"csv", "json"})
     if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
-  auto loaded = loadScenes(names);
+  auto gltfChoice = parseGltfSceneOptions(options);
+  if (!gltfChoice) return fail(gltfChoice.error());
+  auto loaded = loadScenes(names, *gltfChoice);
   if (!loaded) return fail(loaded.error());
   const std::vector<std::shared_ptr<const scene::Scene>>& scenes = *loaded;
   auto context = openGlContext(options.text("gl"));

@@ -27,7 +27,7 @@ constexpr int kJpegQuality = 92;
 
 CommandLine renderOptions() {
   std::vector<OptionSpec> specs = {
-      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`) or JSON scene file", "checker-sphere"},
+      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file", "checker-sphere"},
       {"size", "WxH", "frame size in pixels", "640x480"},
       {"eye", "x,y,z", "camera position, world metres", ""},
       {"target", "x,y,z", "point the camera looks at", ""},
@@ -36,11 +36,12 @@ CommandLine renderOptions() {
       {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
       {"method", "METHOD", "search | explosion-map (= search with --search explosion-map) | environment-map | raytrace | none", "search"},
   };
+  for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
   specs.push_back(glOption());
   return CommandLine(
-      "specula render [--scene NAME|FILE] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
+      "specula render [--scene NAME|FILE] [--gltf-scene N] [--camera N] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
       "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
@@ -191,7 +192,9 @@ int runRender(std::span<const std::string> arguments) {
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   if (!time) return fail(time.error());
 
-  auto scene = loadScene(options.text("scene"));
+  auto gltfChoice = parseGltfSceneOptions(options);
+  if (!gltfChoice) return fail(gltfChoice.error());
+  auto scene = loadScene(options.text("scene"), *gltfChoice);
   if (!scene) return fail(scene.error());
   std::string out = options.has("out") ? options.text("out") : defaultOutputName((*scene)->name);
   const std::string extension = std::filesystem::path(out).extension().string();

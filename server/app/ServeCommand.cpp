@@ -24,7 +24,7 @@ CommandLine serveOptions() {
   std::vector<OptionSpec> specs = {
       {"bind", "ADDRESS", "address to listen on; anything but loopback needs --token", "127.0.0.1"},
       {"port", "PORT", "TCP port; 0 picks a free one (printed at start)", "8080"},
-      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`) or JSON scene file", "checker-sphere"},
+      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file", "checker-sphere"},
       {"max-sessions", "N", "concurrent sessions; more are refused with close code 1013", "16"},
       {"token", "SECRET", "clients must send it (?token= or Authorization: Bearer); also read from SPECULA_TOKEN", ""},
       {"web-root", "DIR", "folder served at / (the browser client)", SPECULA_DEFAULT_WEB_ROOT},
@@ -34,6 +34,7 @@ CommandLine serveOptions() {
       {"still-delay", "MS", "quiet time after input before a full-quality still frame", "150"},
       {"max-size", "WxH", "largest viewport a client may ask for", "3840x2160"},
   };
+  for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
   std::vector<OptionSpec> sessionDefaults = tessellationOptions();
   const std::vector<OptionSpec> search = searchOptions();
   sessionDefaults.insert(sessionDefaults.begin(), search.begin(), search.end());
@@ -43,7 +44,7 @@ CommandLine serveOptions() {
   }
   specs.push_back(glOption());
   return CommandLine(
-      "specula serve [--bind ADDRESS] [--port PORT] [--scene NAME|FILE] [--max-sessions N] [--token SECRET] "
+      "specula serve [--bind ADDRESS] [--port PORT] [--scene NAME|FILE] [--gltf-scene N] [--camera N] [--max-sessions N] [--token SECRET] "
       "[--gl BACKEND] [...]",
       "Serves a scene to browsers and thin clients on one port:\n"
       "  GET /         the browser client (files of --web-root)\n"
@@ -95,7 +96,9 @@ int runServe(std::span<const std::string> arguments) {
   serverOptions.webRoot = options.text("web-root");
   if (auto problem = net::bindProblem(serverOptions)) return fail(*problem);  // before the slow scene and GL setup
 
-  auto scene = loadScene(options.text("scene"));
+  auto gltfChoice = parseGltfSceneOptions(options);
+  if (!gltfChoice) return fail(gltfChoice.error());
+  auto scene = loadScene(options.text("scene"), *gltfChoice);
   if (!scene) return fail(scene.error());
 
   // Block the shutdown signals before any thread starts, so every thread inherits the mask and the main

@@ -6,9 +6,16 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <limits>
+#include <map>
 #include <optional>
+#include <set>
 
+#include "math/Transform.h"
 #include "scene/AssetFiles.h"
+#include "scene/MeshTopology.h"
 #include "scene/MeshNormals.h"
 #include "scene/Primitives.h"
 #include "scene/SceneChecks.h"
@@ -377,8 +384,9 @@ Result<std::size_t> selectMesh(const tinygltf::Model& model, const GltfMeshSelec
                "); pick one by index or name"};
 }
 
-Result<Mesh> importFromBytes(std::string_view bytes, const fs::path& folder, const GltfMeshSelector& which,
-                             std::string meshName) {
+// The parsed, checked asset: GLB framing, JSON depth and declared buffer sizes first, then tinygltf
+// with file access confined to `folder`.
+Result<tinygltf::Model> loadModel(std::string_view bytes, const fs::path& folder) {
   if (bytes.empty()) return Error{"empty file; expected glTF JSON or a GLB container"};
   const bool binary = bytes.starts_with("glTF");
   Result<std::string_view> json = binary ? glbJsonChunk(bytes) : Result<std::string_view>(bytes);
@@ -407,23 +415,282 @@ Result<Mesh> importFromBytes(std::string_view bytes, const fs::path& folder, con
   } catch (const std::exception& e) {
     return Error{"cannot be parsed: " + std::string(e.what())};
   }
+  return model;
+}
 
-  Result<std::size_t> chosen = selectMesh(model, which);
-  if (!chosen) return Error{chosen.error()};
-  const tinygltf::Mesh& source = model.meshes[chosen.value()];
+// Every triangle primitive of mesh `index`, concatenated, in the mesh's own space.
+Result<Mesh> readMesh(const tinygltf::Model& model, std::size_t index, std::string name) {
+  const tinygltf::Mesh& source = model.meshes[index];
   Mesh mesh;
-  mesh.name = std::move(meshName);
+  mesh.name = std::move(name);
   for (std::size_t p = 0; p < source.primitives.size(); ++p) {
-    Result<Mesh> part = readPrimitive(model, source.primitives[p],
-                                      "primitive " + std::to_string(p) + " of mesh " + std::to_string(chosen.value()));
+    Result<Mesh> part =
+        readPrimitive(model, source.primitives[p], "primitive " + std::to_string(p) + " of mesh " + std::to_string(index));
     if (!part) return Error{part.error()};
     if (mesh.vertices.size() + part->vertices.size() > kMaxVerticesPerScene)
-      return Error{"mesh " + std::to_string(chosen.value()) + " has more than " + std::to_string(kMaxVerticesPerScene) +
+      return Error{"mesh " + std::to_string(index) + " has more than " + std::to_string(kMaxVerticesPerScene) +
                    " vertices, the limit per scene"};
     primitives::append(mesh, part.value(), glm::mat4(1.0f));
   }
-  if (mesh.indices.empty()) return Error{"mesh " + std::to_string(chosen.value()) + " has no primitives"};
+  if (mesh.indices.empty()) return Error{"mesh " + std::to_string(index) + " has no primitives"};
   return mesh;
+}
+
+
+// What a glTF material is here: base colour factor (glTF holds linear RGB) and, where it is metallic
+// and smooth enough to be a mirror, its reflectivity. Textures are not read yet.
+Result<Material> materialFrom(const tinygltf::Material& source, std::size_t index, bool& chrome) {
+  Material material;
+  material.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
+  const std::string where = "material " + std::to_string(index) + ": ";
+  const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+  if (pbr.baseColorFactor.size() != 4) return Error{where + "baseColorFactor must have 4 components"};
+  for (int c = 0; c < 3; ++c) {
+    const double value = pbr.baseColorFactor[static_cast<std::size_t>(c)];
+    if (!std::isfinite(value) || value < 0.0 || value > 1.0) return Error{where + "baseColorFactor must lie in [0, 1]"};
+    material.baseColor[c] = static_cast<float>(value);
+  }
+  const double metallic = pbr.metallicFactor, roughness = pbr.roughnessFactor;
+  if (!std::isfinite(metallic) || !std::isfinite(roughness) || metallic < 0.0 || metallic > 1.0 || roughness < 0.0 ||
+      roughness > 1.0)
+    return Error{where + "metallicFactor and roughnessFactor must lie in [0, 1]"};
+  chrome = metallic >= kGltfMirrorMetallic && roughness <= kGltfMirrorRoughness;
+  // A metal reflects its base colour's share of the light; the brightest channel stands for it.
+  if (chrome) material.reflectivity = static_cast<float>(metallic) * std::max({material.baseColor.x, material.baseColor.y, material.baseColor.z});
+  material.unlit = source.extensions.count("KHR_materials_unlit") > 0;
+  return material;
+}
+
+// A node's own transform: its matrix, or translation · rotation · scale.
+Result<glm::dmat4> nodeMatrix(const tinygltf::Node& node, std::size_t index) {
+  const std::string where = "node " + std::to_string(index) + ": ";
+  const auto finite = [](const std::vector<double>& values) {
+    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+  };
+  if (!finite(node.matrix) || !finite(node.translation) || !finite(node.rotation) || !finite(node.scale))
+    return Error{where + "its transform is not finite"};
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16) return Error{where + "matrix must have 16 numbers"};
+    glm::dmat4 m;
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 4; ++row) m[column][row] = node.matrix[static_cast<std::size_t>(4 * column + row)];  // column-major
+    return m;
+  }
+  glm::dmat4 m(1.0);
+  if (!node.translation.empty()) {
+    if (node.translation.size() != 3) return Error{where + "translation must have 3 numbers"};
+    m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+  }
+  if (!node.rotation.empty()) {
+    if (node.rotation.size() != 4) return Error{where + "rotation must be a quaternion of 4 numbers (x, y, z, w)"};
+    const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    if (glm::length(q) < 1e-6) return Error{where + "rotation is a zero quaternion"};
+    m = m * glm::mat4_cast(glm::normalize(q));
+  }
+  if (!node.scale.empty()) {
+    if (node.scale.size() != 3) return Error{where + "scale must have 3 numbers"};
+    m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  }
+  return m;
+}
+
+// The light a node carries through KHR_lights_punctual, if any.
+std::optional<int> nodeLight(const tinygltf::Node& node) {
+  const auto extension = node.extensions.find("KHR_lights_punctual");
+  if (extension == node.extensions.end() || !extension->second.IsObject() || !extension->second.Has("light")) return std::nullopt;
+  const tinygltf::Value& light = extension->second.Get("light");
+  return light.IsInt() ? std::optional<int>(light.GetNumberAsInt()) : std::nullopt;
+}
+
+// A view of the scene's bounds from the front, above and to the right, the whole box in a 45° frame.
+math::Camera framingCamera(const Scene& scene) {
+  glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
+  for (const SceneObject& object : scene.objects)
+    for (const Vertex& v : scene.meshes[object.mesh].vertices) {
+      low = glm::min(low, v.position);
+      high = glm::max(high, v.position);
+    }
+  const glm::vec3 centre = 0.5f * (low + high);
+  const float radius = std::max(0.5f * glm::length(high - low), 1e-3f);
+  math::Camera camera;
+  camera.fovYDegrees = 45.0f;
+  camera.target = centre;
+  camera.eye = centre + radius / std::sin(glm::radians(0.5f * camera.fovYDegrees)) * glm::normalize(glm::vec3(0.5f, 0.4f, 1.0f));
+  return camera;
+}
+
+Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const GltfSceneChoice& choice, std::string name) {
+  ImportedGltfScene imported;
+  Scene& scene = imported.scene;
+  scene.name = std::move(name);
+  scene.background = {0.05f, 0.06f, 0.08f};
+  if (model.scenes.empty()) return Error{"the file holds no scene (\"scenes\" is empty), so nothing is placed to draw"};
+  const std::size_t chosen = choice.scene ? *choice.scene : model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene) : 0;
+  if (chosen >= model.scenes.size())
+    return Error{"there is no scene " + std::to_string(chosen) + " (the file has " + std::to_string(model.scenes.size()) +
+                 "; pick one with --gltf-scene 0.." + std::to_string(model.scenes.size() - 1) + ")"};
+
+  // Materials as primitives use them; -1 (none) gets glTF's default, a light grey here.
+  std::map<int, std::pair<std::uint32_t, bool>> materials;  // glTF index -> scene index, chrome
+  const auto materialOf = [&](int index) -> Result<std::pair<std::uint32_t, bool>> {
+    if (const auto found = materials.find(index); found != materials.end()) return found->second;
+    if (index >= static_cast<int>(model.materials.size()))
+      return Error{"a primitive refers to material " + std::to_string(index) + ", but the file has " +
+                   std::to_string(model.materials.size())};
+    bool chrome = false;
+    Material material;
+    if (index < 0) {
+      material.name = "default";
+    } else {
+      Result<Material> converted = materialFrom(model.materials[static_cast<std::size_t>(index)], static_cast<std::size_t>(index), chrome);
+      if (!converted) return Error{converted.error()};
+      material = std::move(converted.value());
+    }
+    scene.materials.push_back(std::move(material));
+    return materials[index] = {static_cast<std::uint32_t>(scene.materials.size() - 1), chrome};
+  };
+
+  struct Pending {
+    int node;
+    glm::dmat4 parent;
+  };
+  std::vector<Pending> pending;
+  for (auto it = model.scenes[chosen].nodes.rbegin(); it != model.scenes[chosen].nodes.rend(); ++it) pending.push_back({*it, glm::dmat4(1.0)});
+  std::vector<bool> reached(model.nodes.size(), false);
+  std::vector<std::pair<int, glm::dmat4>> cameras;  // camera index, placement, in the order first met
+  std::vector<std::pair<int, glm::dmat4>> lights;
+  std::size_t vertices = 0;
+  std::set<std::string> names;
+  while (!pending.empty()) {
+    const Pending next = pending.back();
+    pending.pop_back();
+    if (next.node < 0 || static_cast<std::size_t>(next.node) >= model.nodes.size())
+      return Error{"scene " + std::to_string(chosen) + " refers to node " + std::to_string(next.node) + ", but the file has " +
+                   std::to_string(model.nodes.size())};
+    const auto index = static_cast<std::size_t>(next.node);
+    if (reached[index])
+      return Error{"node " + std::to_string(index) + " is reached twice: the node tree has a cycle or a node with two parents"};
+    reached[index] = true;
+    const tinygltf::Node& node = model.nodes[index];
+    Result<glm::dmat4> local = nodeMatrix(node, index);
+    if (!local) return Error{local.error()};
+    const glm::dmat4 world = next.parent * local.value();
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) pending.push_back({*child, world});
+    if (node.camera >= 0) cameras.push_back({node.camera, world});
+    if (const auto light = nodeLight(node)) lights.push_back({*light, world});
+    if (node.mesh < 0) continue;
+    if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
+      return Error{"node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
+                   std::to_string(model.meshes.size())};
+    const double determinant = glm::determinant(glm::dmat3(world));
+    if (!(std::abs(determinant) > 1e-18)) {
+      imported.notes.push_back("node " + std::to_string(index) + " has a singular transform (a zero scale): not drawn");
+      continue;
+    }
+    const tinygltf::Mesh& source = model.meshes[static_cast<std::size_t>(node.mesh)];
+    const std::string base = node.name.empty() ? "node " + std::to_string(index) : node.name;
+    for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+      Result<Mesh> part = readPrimitive(model, source.primitives[p],
+                                        "primitive " + std::to_string(p) + " of mesh " + std::to_string(node.mesh));
+      if (!part) return Error{part.error()};
+      if ((vertices += part->vertices.size()) > kMaxVerticesPerScene)
+        return Error{"the scene has more than " + std::to_string(kMaxVerticesPerScene) + " vertices, the limit per scene"};
+      // Placed in world space once (objects keep the identity): any matrix glTF allows, shear included.
+      const glm::mat4 toWorld(world);
+      const glm::mat3 normals = math::normalMatrix(toWorld);
+      for (Vertex& v : part->vertices) {
+        v.position = glm::vec3(toWorld * glm::vec4(v.position, 1.0f));
+        v.normal = glm::normalize(normals * v.normal);
+      }
+      if (determinant < 0.0)  // a mirroring transform turns the winding; glTF keeps fronts where normals point
+        for (std::size_t t = 0; t < part->indices.size(); t += 3) std::swap(part->indices[t + 1], part->indices[t + 2]);
+      std::string objectName = source.primitives.size() > 1 ? base + " #" + std::to_string(p) : base;
+      for (int copy = 2; names.count(objectName) > 0; ++copy) objectName = base + " (" + std::to_string(copy) + ")";
+      names.insert(objectName);
+      part->name = objectName;
+      Result<std::pair<std::uint32_t, bool>> material = materialOf(source.primitives[p].material);
+      if (!material) return Error{material.error()};
+      const bool closed = topology::isWatertight(part.value());
+      scene.meshes.push_back(std::move(part.value()));
+      SceneObject object;
+      object.name = objectName;
+      object.mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+      object.material = material->first;
+      if (material->second && closed) {
+        object.mirror = MirrorInfo{};
+        object.mirror->curvature = MirrorCurvature::Mixed;
+      } else if (material->second) {
+        scene.materials[material->first].reflectivity = 0.0f;
+        imported.notes.push_back("'" + objectName + "' has a mirror material but an open mesh (a mirror needs a closed one): drawn in its colour");
+      }
+      scene.objects.push_back(std::move(object));
+    }
+  }
+  if (scene.objects.empty()) return Error{"scene " + std::to_string(chosen) + " draws no mesh"};
+
+  // The camera: the one asked for, or the first met, or a view framing everything.
+  if (choice.camera && *choice.camera >= model.cameras.size())
+    return Error{"there is no camera " + std::to_string(*choice.camera) + " (the file has " + std::to_string(model.cameras.size()) + ")"};
+  const auto placed = std::find_if(cameras.begin(), cameras.end(), [&](const auto& c) {
+    return !choice.camera || static_cast<std::size_t>(c.first) == *choice.camera;
+  });
+  scene.camera = framingCamera(scene);
+  if (placed == cameras.end()) {
+    if (choice.camera) return Error{"camera " + std::to_string(*choice.camera) + " is on no node of scene " + std::to_string(chosen)};
+  } else if (placed->first < 0 || static_cast<std::size_t>(placed->first) >= model.cameras.size()) {
+    return Error{"a node refers to camera " + std::to_string(placed->first) + ", but the file has " + std::to_string(model.cameras.size())};
+  } else if (model.cameras[static_cast<std::size_t>(placed->first)].type != "perspective") {
+    imported.notes.push_back("camera " + std::to_string(placed->first) + " is not perspective: the view frames the scene instead");
+  } else {
+    const glm::mat4 world(placed->second);
+    const double yfov = model.cameras[static_cast<std::size_t>(placed->first)].perspective.yfov;
+    math::Camera camera;
+    camera.eye = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    camera.target = camera.eye + glm::normalize(glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));  // glTF cameras look down -z
+    camera.up = glm::normalize(glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)));
+    camera.fovYDegrees = static_cast<float>(glm::degrees(yfov));
+    if (auto problem = math::cameraProblem(camera)) return Error{"camera " + std::to_string(placed->first) + ": " + *problem};
+    scene.camera = camera;
+  }
+
+  // KHR_lights_punctual: directions and positions from their nodes, intensities relative to the
+  // brightest (glTF's lux and candela have no meaning for a one-bounce shading without falloff).
+  double brightest = 0.0;
+  for (const auto& [index, world] : lights) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size())
+      return Error{"a node refers to light " + std::to_string(index) + ", but the file has " + std::to_string(model.lights.size())};
+    const double intensity = model.lights[static_cast<std::size_t>(index)].intensity;
+    if (!std::isfinite(intensity) || intensity < 0.0) return Error{"light " + std::to_string(index) + ": intensity must be finite and >= 0"};
+    brightest = std::max(brightest, intensity);
+  }
+  for (const auto& [index, world] : lights) {
+    const tinygltf::Light& source = model.lights[static_cast<std::size_t>(index)];
+    if (scene.lights.size() == kMaxLights) {
+      imported.notes.push_back("more than " + std::to_string(kMaxLights) + " lights: the rest are left out");
+      break;
+    }
+    Light light;
+    const glm::mat4 toWorld(world);
+    if (source.type == "directional") {
+      light.kind = Light::Kind::Directional;
+      light.vector = glm::normalize(glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));  // it shines down -z
+    } else {
+      if (source.type == "spot") imported.notes.push_back("light " + std::to_string(index) + " is a spot light: drawn as a point light");
+      light.kind = Light::Kind::Point;
+      light.vector = glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    }
+    if (source.color.size() == 3 && std::all_of(source.color.begin(), source.color.end(), [](double c) { return std::isfinite(c) && c >= 0.0; }))
+      light.color = glm::vec3(source.color[0], source.color[1], source.color[2]);
+    light.intensity = brightest > 0.0 ? static_cast<float>(source.intensity / brightest) : 0.0f;
+    scene.lights.push_back(light);
+  }
+  if (scene.lights.empty()) {
+    Light sun;
+    sun.vector = glm::normalize(glm::vec3(0.4f, 1.0f, 0.6f));
+    scene.lights.push_back(sun);
+  }
+  if (auto problem = sceneProblem(scene)) return Error{*problem};
+  return imported;
 }
 
 }  // namespace
@@ -431,9 +698,23 @@ Result<Mesh> importFromBytes(std::string_view bytes, const fs::path& folder, con
 Result<Mesh> importGltf(const fs::path& file, const GltfMeshSelector& which, std::string meshName) {
   Result<std::string> bytes = readBoundedFile(file, kMaxAssetFileBytes);
   if (!bytes) return Error{bytes.error()};
-  Result<Mesh> mesh = importFromBytes(bytes.value(), file.parent_path(), which, std::move(meshName));
+  Result<tinygltf::Model> model = loadModel(bytes.value(), file.parent_path());
+  if (!model) return Error{file.string() + ": " + model.error()};
+  Result<std::size_t> chosen = selectMesh(model.value(), which);
+  if (!chosen) return Error{file.string() + ": " + chosen.error()};
+  Result<Mesh> mesh = readMesh(model.value(), chosen.value(), std::move(meshName));
   if (!mesh) return Error{file.string() + ": " + mesh.error()};
   return mesh;
+}
+
+Result<ImportedGltfScene> importGltfScene(const fs::path& file, const GltfSceneChoice& choice) {
+  Result<std::string> bytes = readBoundedFile(file, kMaxAssetFileBytes);
+  if (!bytes) return Error{bytes.error()};
+  Result<tinygltf::Model> model = loadModel(bytes.value(), file.parent_path());
+  if (!model) return Error{file.string() + ": " + model.error()};
+  Result<ImportedGltfScene> scene = sceneFromModel(model.value(), choice, file.stem().string());
+  if (!scene) return Error{file.string() + ": " + scene.error()};
+  return scene;
 }
 
 }  // namespace specula::scene

@@ -1,12 +1,16 @@
 #pragma once
-// glTF 2.0 import (tinygltf) of one mesh's triangles, from .gltf (JSON) or .glb (binary) files.
+// glTF 2.0 import (tinygltf) from .gltf (JSON) or .glb (binary) files: one mesh's triangles for a
+// JSON scene, or a whole glTF scene as a Specula scene.
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 #include <variant>
 
 #include "base/Result.h"
 #include "scene/Mesh.h"
+#include "scene/Scene.h"
 
 namespace specula::scene {
 
@@ -21,5 +25,29 @@ using GltfMeshSelector = std::variant<std::monostate, std::size_t, std::string>;
 // input: bad GLB framing, accessors outside their buffers, wrong component types, out-of-range indices,
 // non-finite values, non-triangle primitives, more than kMaxVerticesPerScene vertices.
 Result<Mesh> importGltf(const std::filesystem::path& file, const GltfMeshSelector& which, std::string meshName);
+
+// A material becomes a mirror where it is this metallic and this smooth (pbrMetallicRoughness), on
+// a closed mesh; its reflectivity is metallic × its base colour's brightest channel.
+inline constexpr double kGltfMirrorMetallic = 0.9, kGltfMirrorRoughness = 0.1;
+
+// Which glTF scene and camera: unset, the file's default scene (else its first) and the first camera
+// met in its node tree (else a view framing the scene's bounds).
+struct GltfSceneChoice {
+  std::optional<std::size_t> scene;
+  std::optional<std::size_t> camera;
+};
+
+struct ImportedGltfScene {
+  Scene scene;
+  std::vector<std::string> notes;  // what was read differently from the file, for the user
+};
+
+// The chosen glTF scene: every node with a mesh, at its world transform (TRS or matrix, composed
+// down the tree; a node reached twice, by a cycle or a second parent, is refused), each primitive an
+// object with its own material (base colour factor; metallic and smooth, on a closed mesh, a mirror
+// of mixed curvature), the chosen camera and the KHR_lights_punctual lights (a default light when
+// there are none). Meshes are stored in world space. Everything importGltf refuses is refused here
+// too, with the file and the path to the problem.
+Result<ImportedGltfScene> importGltfScene(const std::filesystem::path& file, const GltfSceneChoice& choice = {});
 
 }  // namespace specula::scene

@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "MeshTopology.h"
+#include "scene/MeshTopology.h"
 #include "math/Color.h"
 #include "scene/SceneChecks.h"
 #include "scene/ScenePose.h"

@@ -251,6 +251,108 @@ TEST_F(Importer, GltfRefusesToGuessAmongSeveralMeshesAndListsThem) {
   EXPECT_NE(unknown.error().find("no mesh named \"cube\""), std::string::npos) << unknown.error();
 }
 
+// ---- glTF scenes -------------------------------------------------------------------------------------
+
+const fs::path kGltfScenes = fs::path(SPECULA_TEST_DATA_DIR) / "gltf";
+
+const SceneObject* objectNamed(const Scene& scene, const std::string& name) {
+  for (const SceneObject& object : scene.objects)
+    if (object.name == name) return &object;
+  return nullptr;
+}
+
+// The node tree's cube: root (translate (1, 0, 0), quaternion 90° about y) > child (translate
+// (0, 1, 0), scale 2) > cube (matrix: translate (0, 0, 3)), a unit cube about its origin. By hand:
+// the cube's z in [2.5, 3.5] becomes [5, 7] scaled and y [-1, 1] + 1 = [0, 2]; the quarter turn
+// about y sends (x, y, z) to (z, y, -x), and the root adds 1 to x: x in [6, 8], y in [0, 2], z in [-1, 1].
+TEST_F(Importer, GltfSceneComposesNodeTransformsDownTheTree) {
+  for (const char* file : {"node-tree.gltf", "node-tree-external.gltf"}) {
+    Result<ImportedGltfScene> imported = importGltfScene(kGltfScenes / file);
+    ASSERT_TRUE(imported.ok()) << imported.error();
+    const Scene& scene = imported->scene;
+    ASSERT_EQ(scene.objects.size(), 2u) << file;
+    const SceneObject* cube = objectNamed(scene, "cube");
+    ASSERT_NE(cube, nullptr);
+    glm::vec3 low(1e9f), high(-1e9f);
+    for (const Vertex& v : scene.meshes[cube->mesh].vertices) {
+      low = glm::min(low, v.position);
+      high = glm::max(high, v.position);
+      EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
+    }
+    expectNear(low, {6, 0, -1});
+    expectNear(high, {8, 2, 1});
+    // A chrome material (metallic 1, roughness 0.05) on a closed mesh is a mirror; the red quad is not.
+    ASSERT_TRUE(cube->mirror.has_value());
+    EXPECT_TRUE(cube->mirror->closed);
+    EXPECT_NEAR(scene.materials[cube->material].reflectivity, 0.9f, 1e-6f);
+    const SceneObject* ground = objectNamed(scene, "ground");
+    ASSERT_NE(ground, nullptr);
+    EXPECT_FALSE(ground->mirror.has_value());
+    expectNear(scene.materials[ground->material].baseColor, {0.8f, 0.1f, 0.1f});
+    // The camera node at (7, 3, 12) looks down its -z; yfov 0.7 rad.
+    expectNear(scene.camera.eye, {7, 3, 12});
+    expectNear(glm::normalize(scene.camera.target - scene.camera.eye), {0, 0, -1});
+    EXPECT_NEAR(scene.camera.fovYDegrees, glm::degrees(0.7f), 1e-4f);
+    // The sun, turned 45° about x, shines down -z: towards it is (0, sin 45°, cos 45°).
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].kind, Light::Kind::Directional);
+    expectNear(scene.lights[0].vector, {0, std::sqrt(0.5f), std::sqrt(0.5f)});
+    EXPECT_FLOAT_EQ(scene.lights[0].intensity, 1.0f);
+    EXPECT_TRUE(imported->notes.empty());
+  }
+}
+
+TEST_F(Importer, GltfSceneWithoutCameraOrLightsFramesItAndLightsItByDefault) {
+  json document = triangleGltf();
+  document["nodes"] = json::parse(R"([{"mesh": 0, "translation": [10, 0, 0]}])");
+  document["scenes"] = json::parse(R"([{"nodes": [0]}])");
+  Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
+  ASSERT_TRUE(imported.ok()) << imported.error();
+  const Scene& scene = imported->scene;
+  ASSERT_EQ(scene.lights.size(), 1u);
+  // The triangle's bounds (10..11, 0..1, 0) centred in view.
+  expectNear(scene.camera.target, {10.5f, 0.5f, 0.0f});
+  EXPECT_FALSE(math::cameraProblem(scene.camera).has_value());
+}
+
+TEST_F(Importer, GltfSceneRefusesBrokenTreesAndChoicesByName) {
+  const auto expectSceneFailure = [&](const char* nodes, const char* scenes, const std::string& expected,
+                                      GltfSceneChoice choice = {}) {
+    json document = triangleGltf();
+    document["nodes"] = json::parse(nodes);
+    document["scenes"] = json::parse(scenes);
+    Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)), choice);
+    ASSERT_FALSE(imported.ok()) << expected;
+    EXPECT_NE(imported.error().find(expected), std::string::npos) << "message: " << imported.error() << "\nlacks: " << expected;
+  };
+  expectSceneFailure(R"([{"mesh": 0, "children": [1]}, {"children": [0]}])", R"([{"nodes": [0]}])",
+                     "node 0 is reached twice: the node tree has a cycle or a node with two parents");
+  expectSceneFailure(R"([{"children": [2]}, {"children": [2]}, {"mesh": 0}])", R"([{"nodes": [0, 1]}])", "node 2 is reached twice");
+  expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [3]}])", "scene 0 refers to node 3, but the file has 1");
+  expectSceneFailure(R"([{"mesh": 0}])", R"([])", "the file holds no scene");
+  expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no scene 2 (the file has 1; pick one with --gltf-scene 0..0)",
+                     GltfSceneChoice{2, std::nullopt});
+  expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no camera 0 (the file has 0)",
+                     GltfSceneChoice{std::nullopt, 0});
+  expectSceneFailure(R"([{"mesh": 0, "translation": [1, 2]}])", R"([{"nodes": [0]}])", "node 0: translation must have 3 numbers");
+  expectSceneFailure(R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}])", R"([{"nodes": [0]}])", "node 0: rotation is a zero quaternion");
+  expectSceneFailure(R"([{"mesh": 5}])", R"([{"nodes": [0]}])", "node 0 refers to mesh 5, but the file has 1");
+  expectSceneFailure(R"([{"camera": 0}])", R"([{"nodes": [0]}])", "scene 0 draws no mesh");
+}
+
+TEST_F(Importer, GltfSceneKeepsAnOpenChromeMeshInItsColourAndSaysSo) {
+  json document = triangleGltf();  // one triangle: open
+  document["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"metallicFactor": 1.0, "roughnessFactor": 0.0}}])");
+  document["meshes"][0]["primitives"][0]["material"] = 0;
+  document["nodes"] = json::parse(R"([{"mesh": 0, "name": "shard"}])");
+  document["scenes"] = json::parse(R"([{"nodes": [0]}])");
+  Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
+  ASSERT_TRUE(imported.ok()) << imported.error();
+  EXPECT_FALSE(imported->scene.objects[0].mirror.has_value());
+  ASSERT_EQ(imported->notes.size(), 1u);
+  EXPECT_NE(imported->notes[0].find("'shard' has a mirror material but an open mesh"), std::string::npos) << imported->notes[0];
+}
+
 TEST_F(Importer, GlbFramingMustHoldTogether) {
   const std::string good = glb(triangleGltf(), kTriangle);
   ASSERT_TRUE(gltf(good).ok());

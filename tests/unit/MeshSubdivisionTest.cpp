@@ -1,7 +1,7 @@
 // Long edges split at load ("max_edge"): no crack, same surface, every edge short enough.
 #include <gtest/gtest.h>
 
-#include "MeshTopology.h"
+#include "scene/MeshTopology.h"
 #include "scene/MeshSubdivision.h"
 #include "scene/Primitives.h"
 #include "scene/SceneLoader.h"

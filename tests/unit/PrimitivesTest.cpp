@@ -3,7 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
-#include "MeshTopology.h"
+#include "scene/MeshTopology.h"
 #include "scene/Primitives.h"
 
 using namespace specula::scene;

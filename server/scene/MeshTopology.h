@@ -1,5 +1,6 @@
 #pragma once
-// Geometry checks shared by the primitive and built-in scene tests: watertightness and winding.
+// Geometry checks: watertightness and winding (the glTF importer decides a mirror is closed by the
+// first; the primitive and built-in scene tests use both).
 #include <cmath>
 #include <glm/glm.hpp>
 #include <map>

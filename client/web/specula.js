@@ -223,10 +223,11 @@
       method: $('method').value, search: $('search').value, explosionMapSize: Number($('explosionMapSize').value),
       virtualPixels: $('virtualPixels').value, extrusions: $('extrusions').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
       threshold, level: level === 0 ? -1 : level,
-      jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value), ...nextInput(),
+      jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value),
+      stillSamples: Number($('stillSamples').value), interactiveSamples: Number($('interactiveSamples').value), ...nextInput(),
     } });
   }
-  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'extrusions', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale'])
+  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'extrusions', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale', 'stillSamples', 'interactiveSamples'])
     $(id).addEventListener('change', sendSettings);
 
   function showSettings(settings) {
@@ -243,6 +244,8 @@
     set('level', settings.level === -1 ? 0 : settings.level);
     set('quality', settings.jpegQuality);
     set('scale', String(settings.resolutionScale));
+    set('stillSamples', String(settings.stillSamples));
+    set('interactiveSamples', String(settings.interactiveSamples));
   }
 
   // ---- viewport ----

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "math/SamplePattern.h"
+
 namespace specula::app {
 
 namespace {
@@ -189,6 +191,15 @@ Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& opt
   if (!tessellation) return Error{tessellation.error()};
   settings.tessellation = *tessellation;
   return settings;
+}
+
+OptionSpec samplesOption(int fallback, const std::string& what) { return {"samples", "N", what, std::to_string(fallback)}; }
+
+Result<int> parseSamples(const CommandLine& options, const std::string& name) {
+  auto samples = options.integer(name, 1, 16);
+  if (!samples) return Error{samples.error()};
+  if (auto problem = math::sampleCountProblem(*samples)) return Error{"--" + name + ": " + *problem};
+  return *samples;
 }
 
 }  // namespace specula::app

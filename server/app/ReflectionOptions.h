@@ -34,4 +34,8 @@ std::vector<OptionSpec> reflectionOptions();
 // Reads them all (the method stays the default: each command names its own methods).
 Result<passes::ReflectionSettings> parseReflectionOptions(const CommandLine& options);
 
+// --samples N: anti-aliasing, rays or jittered frames per pixel (math::samplePattern), `fallback` by default.
+OptionSpec samplesOption(int fallback, const std::string& what = "anti-aliasing: samples per pixel, 1, 2, 4, 8 or 16 (every method takes the same points)");
+Result<int> parseSamples(const CommandLine& options, const std::string& name = "samples");
+
 }  // namespace specula::app

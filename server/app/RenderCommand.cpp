@@ -16,6 +16,7 @@
 #include "encode/PngEncoder.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
+#include "math/SamplePattern.h"
 #include "scene/ScenePose.h"
 
 namespace specula::app {
@@ -38,12 +39,13 @@ CommandLine renderOptions() {
   };
   for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
+  specs.push_back(samplesOption(math::kStillFrameSamples));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
   specs.push_back(glOption());
   return CommandLine(
       "specula render [--scene NAME|FILE] [--gltf-scene N] [--camera N] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
       "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
-      "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--samples N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
@@ -123,7 +125,8 @@ std::string describePatchTessellation(const passes::PatchTessellationMeasure& me
 // Per-stage timings, the plan and search statistics of a GL frame, as `render` prints them.
 std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame& frame,
                           const passes::ReflectionSettings& settings) {
-  std::string text = "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ":";
+  std::string text = "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                     (frame.samples > 1 ? ", " + std::to_string(frame.samples) + " samples a pixel, pass times summed over them" : "") + ":";
   for (const render::StageTiming& stage : frame.timings.stages)
     text += " " + stage.name + " " + formatMilliseconds(stage.milliseconds) + " ms,";
   text += " total " + formatMilliseconds(frame.timings.totalMilliseconds) + " ms\n";
@@ -188,7 +191,9 @@ int runRender(std::span<const std::string> arguments) {
   if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   auto size = options.size("size", kMaxFrameSide);
   auto time = options.number("time");
+  auto samples = parseSamples(options);
   if (!size) return fail(size.error());
+  if (!samples) return fail(samples.error());
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   if (!time) return fail(time.error());
 
@@ -224,17 +229,21 @@ int runRender(std::span<const std::string> arguments) {
   if (method == "raytrace") {
     auto tracer = reference::RayTracer::create(*scene);
     if (!tracer) return fail(tracer.error());
-    auto image = (*tracer)->render(pose, {size->first, size->second, 1, 0});
+    reference::RayTracerOptions traced;
+    traced.width = size->first;
+    traced.height = size->second;
+    traced.samples = *samples;
+    auto image = (*tracer)->render(pose, traced);
     if (!image) return fail(image.error());
     rgba = std::move(image->rgba);
     timings = "frame " + std::to_string(size->first) + "x" + std::to_string(size->second) + ": raytrace " +
-              formatMilliseconds(image->milliseconds) + " ms (CPU, Embree)\n";
+              formatMilliseconds(image->milliseconds) + " ms (CPU, Embree, " + std::to_string(*samples) + " rays a pixel)\n";
   } else {
     auto context = openGlContext(options.text("gl"));
     if (!context) return fail(context.error());
     auto renderer = render::Renderer::create(**context, *scene);
     if (!renderer) return fail(renderer.error());
-    auto frame = (*renderer)->render(pose, size->first, size->second, *settings);
+    auto frame = (*renderer)->render(pose, size->first, size->second, *settings, *samples);
     if (!frame) return fail(frame.error());
     auto patches = (*renderer)->measurePatchTessellation(pose, *frame);
     if (!patches) return fail(patches.error());

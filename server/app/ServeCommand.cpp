@@ -13,6 +13,7 @@
 #include "app/SceneSource.h"
 #include "app/ReflectionOptions.h"
 #include "app/Service.h"
+#include "math/SamplePattern.h"
 
 namespace specula::app {
 
@@ -38,6 +39,9 @@ CommandLine serveOptions() {
   std::vector<OptionSpec> sessionDefaults = tessellationOptions();
   const std::vector<OptionSpec> search = searchOptions();
   sessionDefaults.insert(sessionDefaults.begin(), search.begin(), search.end());
+  sessionDefaults.push_back({"still-samples", "N", "anti-aliasing of still frames: samples a pixel, 1, 2, 4, 8 or 16",
+                             std::to_string(math::kStillFrameSamples)});
+  sessionDefaults.push_back({"interactive-samples", "N", "anti-aliasing of frames sent while input arrives", "1"});
   for (OptionSpec& spec : sessionDefaults) {
     spec.help += " (sessions' default)";
     specs.push_back(std::move(spec));
@@ -75,6 +79,8 @@ int runServe(std::span<const std::string> arguments) {
   auto maxFps = options.number("max-fps");
   auto maxSize = options.size("max-size", 16384);
   auto tessellation = parseTessellationOptions(options);
+  auto stillSamples = parseSamples(options, "still-samples");
+  auto interactiveSamples = parseSamples(options, "interactive-samples");
   passes::ReflectionSettings sessionReflection;  // every session starts with these
   const Status search = parseSearchOptions(options, sessionReflection);
   for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
@@ -82,7 +88,9 @@ int runServe(std::span<const std::string> arguments) {
                                encodeThreads ? Status{} : Error{encodeThreads.error()},
                                stillDelay ? Status{} : Error{stillDelay.error()}, maxFps ? Status{} : Error{maxFps.error()},
                                maxSize ? Status{} : Error{maxSize.error()},
-                               tessellation ? Status{} : Error{tessellation.error()}, search})
+                               tessellation ? Status{} : Error{tessellation.error()}, search,
+                               stillSamples ? Status{} : Error{stillSamples.error()},
+                               interactiveSamples ? Status{} : Error{interactiveSamples.error()}})
     if (!status) return fail(status.error());
   if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
@@ -120,6 +128,8 @@ int runServe(std::span<const std::string> arguments) {
   config.hub.maxFps = *maxFps;
   config.hub.defaults.reflection = sessionReflection;
   config.hub.defaults.reflection.tessellation = *tessellation;
+  config.hub.defaults.stillSamples = *stillSamples;
+  config.hub.defaults.interactiveSamples = *interactiveSamples;
   config.hub.scheduler = {*renderThreads, *encodeThreads};
   config.server = serverOptions;
   auto service = Service::start(std::move(config));

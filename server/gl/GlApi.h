@@ -40,6 +40,7 @@ namespace specula::gl {
   X(PFNGLBINDTEXTUREPROC, BindTexture)                                                             \
   X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                         \
   X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)                                                           \
+  X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                                                         \
   X(PFNGLTEXSTORAGE3DPROC, TexStorage3D)                                                           \
   X(PFNGLSCISSORPROC, Scissor)                                                                     \
   X(PFNGLFRAMEBUFFERTEXTURELAYERPROC, FramebufferTextureLayer)                                     \

@@ -1,5 +1,6 @@
 #include "math/Color.h"
 
+#include <array>
 #include <cmath>
 
 namespace specula::math {
@@ -14,6 +15,15 @@ float linearToSrgb(float linear) {
 
 glm::vec3 srgbToLinear(const glm::vec3& srgb) {
   return {srgbToLinear(srgb.x), srgbToLinear(srgb.y), srgbToLinear(srgb.z)};
+}
+
+float srgbByteToLinear(std::uint8_t srgb) {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> values{};
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = srgbToLinear(static_cast<float>(i) / 255.0f);
+    return values;
+  }();
+  return table[srgb];
 }
 
 }  // namespace specula::math

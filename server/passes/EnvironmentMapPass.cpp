@@ -35,7 +35,7 @@ glm::vec3 mirrorCentre(const FrameContext& frame, std::size_t mirrorObject) {
 Result<std::unique_ptr<EnvironmentMapPass>> EnvironmentMapPass::create(const gl::GlApi& gl) {
   auto capture = gl::ShaderProgram::build(gl, {"scene/scene.vert", "scene/scene.frag"});
   if (!capture) return Error{capture.error()};
-  auto lookup = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "environment-map/environment-map.frag"});
+  auto lookup = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "environment-map/environment-map.frag"});
   if (!lookup) return Error{lookup.error()};
   return std::unique_ptr<EnvironmentMapPass>(new EnvironmentMapPass(gl, std::move(capture.value()), std::move(lookup.value())));
 }
@@ -96,7 +96,7 @@ void EnvironmentMapPass::capture(const FrameContext& frame, std::size_t mirrorOb
         const scene::SceneObject& object = frame.scene.objects[range->object];
         capture_.set("objectToWorld", frame.pose.objectToWorld[range->object]);
         capture_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[range->object]));
-        setMaterial(capture_, frame.scene.materials[object.material]);
+        setMaterial(capture_, frame.scene.materials[object.material], frame.textures);
         frame.meshes.draw(object.mesh);
       }
     }

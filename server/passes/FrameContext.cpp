@@ -1,5 +1,6 @@
 #include "passes/FrameContext.h"
 
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "math/Transform.h"
@@ -9,7 +10,16 @@ namespace specula::passes {
 glm::mat4 FrameView::worldToClip(glm::vec2 widen, float farScale) const {
   const glm::mat4 projection =
       glm::perspective(glm::radians(fovYDegrees), aspect, nearDistance, farDistance * farScale);
-  return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / widen.x, 1.0f / widen.y, 1.0f)) * projection * worldToView;
+  return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / widen.x, 1.0f / widen.y, 1.0f)) *
+         glm::translate(glm::mat4(1.0f), glm::vec3(jitterClip, 0.0f)) * projection * worldToView;
+}
+
+float FrameView::pixelAngle(int height) const {
+  return 2.0f * std::tan(glm::radians(fovYDegrees) * 0.5f) / static_cast<float>(height);
+}
+
+glm::vec3 FrameView::forward() const {
+  return -glm::normalize(glm::vec3(glm::inverse(worldToView)[2]));  // the view looks down its -z
 }
 
 std::size_t FrameContext::searchMesh(std::size_t mirrorObject) const {

@@ -6,6 +6,7 @@
 
 #include "gl/GlApi.h"
 #include "gl/GpuMeshes.h"
+#include "gl/GpuTextures.h"
 #include "gl/RenderTarget.h"
 #include "gl/ShaderProgram.h"
 #include "math/Bounds.h"
@@ -23,10 +24,17 @@ struct FrameView {
   float fovYDegrees = 45.0f;
   float aspect = 1.0f;           // width / height
   float nearDistance = 0.1f, farDistance = 100.0f;
+  // Anti-aliased frames: the sample point's offset from the pixel centre, in clip x and y (the whole
+  // projection moves with it, so every pass and the G-buffer see the same shifted pixel grid).
+  glm::vec2 jitterClip{0.0f};
 
   // worldToClip with the image plane widened by `widen` (1 = the frame itself) and the far plane
   // moved to farScale × farDistance.
   glm::mat4 worldToClip(glm::vec2 widen = glm::vec2(1.0f), float farScale = 1.0f) const;
+  // Radians one pixel of a frame `height` pixels tall spans on the view axis.
+  float pixelAngle(int height) const;
+  // The view axis, world, unit.
+  glm::vec3 forward() const;
 };
 
 struct FrameContext {
@@ -35,6 +43,7 @@ struct FrameContext {
   const scene::ScenePose& pose;
   const std::vector<math::Bounds>& worldBounds;  // per object, at this pose
   const gl::GpuMeshes& meshes;
+  const gl::GpuTextures& textures;
   const FrameView& view;
   const FramePlan& plan;
   const ReflectionSettings& settings;

@@ -62,7 +62,7 @@ void ScenePass::execute(const FrameContext& frame) {
     if (patches)
       setPatchView(program, frame.pose.objectToWorld[i], frame.view.worldToClip(), {frame.target.width(), frame.target.height()});
     const scene::Material& material = frame.scene.materials[object.material];
-    setMaterial(program, material);
+    setMaterial(program, material, frame.textures);
     program.set("surfaceWeight", stencil[i] != 0 ? 1.0f - material.reflectivity : 1.0f);
     gl.StencilFunc(GL_ALWAYS, stencil[i], 0xFF);
     if (quadric) {

@@ -19,7 +19,9 @@ void setSceneLighting(const gl::ShaderProgram& program, const scene::Scene& scen
   }
 }
 
-void setMaterial(const gl::ShaderProgram& program, const scene::Material& material) {
+void setMaterial(const gl::ShaderProgram& program, const scene::Material& material, const gl::GpuTextures& textures) {
+  textures.bind(material.texture);
+  program.set("materialTexture", static_cast<int>(gl::GpuTextures::kMaterialTextureUnit));
   program.set("materialBaseColor", material.baseColor);
   program.set("materialUnlit", material.unlit ? 1 : 0);
   program.set("materialHasChecker", material.checker ? 1 : 0);
@@ -27,6 +29,11 @@ void setMaterial(const gl::ShaderProgram& program, const scene::Material& materi
     program.set("materialCheckerOddColor", material.checker->oddColor);
     program.set("materialCheckerCellsPerUnit", material.checker->cellsPerUnit);
   }
+}
+
+void setRayCone(const gl::ShaderProgram& program, const FrameContext& frame) {
+  program.set("viewForward", frame.view.forward());
+  program.set("pixelAngle", frame.view.pixelAngle(frame.target.height()));
 }
 
 }  // namespace specula::passes

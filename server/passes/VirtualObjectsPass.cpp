@@ -30,19 +30,19 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   auto tessellated =
       gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects-tessellated.vert", "virtual-objects/virtual-objects.frag"});
   if (!tessellated) return Error{tessellated.error()};
-  auto region = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/mirror-region.frag"});
+  auto region = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/mirror-region.frag"});
   if (!region) return Error{region.error()};
-  auto rayCast = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/ray-cast.frag"});
+  auto rayCast = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/ray-cast.frag"});
   if (!rayCast) return Error{rayCast.error()};
   auto rayCastTiles = gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tile.vert", "virtual-objects/ray-cast.frag"});
   if (!rayCastTiles) return Error{rayCastTiles.error()};
   auto classifyTiles = gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tiles.comp"});
   if (!classifyTiles) return Error{classifyTiles.error()};
-  auto findUncovered = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/uncovered-pixels.frag"});
+  auto findUncovered = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/uncovered-pixels.frag"});
   if (!findUncovered) return Error{findUncovered.error()};
   auto uncoveredPixel = gl::ShaderProgram::build(gl, {"virtual-objects/uncovered-pixel.vert", "virtual-objects/ray-cast.frag"});
   if (!uncoveredPixel) return Error{uncoveredPixel.error()};
-  auto composite = gl::ShaderProgram::build(gl, {"virtual-objects/mirror-region.vert", "virtual-objects/reflection-composite.frag"});
+  auto composite = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/reflection-composite.frag"});
   if (!composite) return Error{composite.error()};
   return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
                                                                     std::move(region.value()), std::move(rayCast.value()),
@@ -53,7 +53,7 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
 
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const {
   frame.setReflectedObject(objects_, range);
-  setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material]);
+  setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material], frame.textures);
   frame.meshes.draw(frame.scene.objects[range.object].mesh);
 }
 
@@ -74,7 +74,7 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMir
     tessellated_.use();
     frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
     frame.gl.BindVertexArray(emptyVertexArray_.id());
-    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object->object].material]);
+    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object->object].material], frame.textures);
     frame.gl.DrawArrays(GL_TRIANGLES, 3 * range.firstTriangle, 3 * range.triangles);
   }
 }
@@ -191,7 +191,7 @@ void VirtualObjectsPass::setCastRay(const FrameContext& frame, const gl::ShaderP
   program.set("eyePosition", frame.pose.camera.eye);
   // The G-buffer point's own error: half a texel where pixel centres fall between texels, and the
   // rounding of half floats at the mirror's largest coordinate.
-  const float pixelAngle = 2.0f * std::tan(glm::radians(frame.pose.camera.fovYDegrees) * 0.5f) / static_cast<float>(frame.target.height());
+  const float pixelAngle = frame.view.pixelAngle(frame.target.height());
   const float texelsPerPixel = resources.texelsPerPixel();
   const bool texelPerPixel = std::abs(texelsPerPixel - 1.0f) < 1e-3f;  // pixel centres on texel centres: no interpolation
   program.set("liftPerMetre", texelPerPixel ? 0.0f : 0.5f * pixelAngle / texelsPerPixel);
@@ -217,7 +217,8 @@ void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::Sha
   program.set("minDistance", objectIndex == mirror.mirrorObject ? bvh.minDistance : 0.0f);
   program.set("reflectivity", frame.scene.materials[frame.scene.objects[mirror.mirrorObject].material].reflectivity);
   setSceneLighting(program, frame.scene);
-  setMaterial(program, frame.scene.materials[object.material]);
+  setMaterial(program, frame.scene.materials[object.material], frame.textures);
+  setRayCone(program, frame);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, bvh.nodes.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, bvh.triangles.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, frame.meshes.vertexBuffer(object.mesh));
@@ -391,6 +392,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     objects->set("eyePosition", frame.pose.camera.eye);
     objects->set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
     objects->set("drawAsPlaced", frame.settings.virtualPixels == VirtualPixels::AsPlaced ? 1 : 0);
+    setRayCone(*objects, frame);
     setGBufferPixelMapping(*objects, frame.reflections);
     setSceneLighting(*objects, frame.scene);
   }

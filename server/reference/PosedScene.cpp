@@ -209,6 +209,10 @@ SurfaceHit PosedScene::triangleHit(const Geometry& geometry, unsigned primitive,
   const glm::dvec3 normal = w * glm::dvec3(va.normal) + u * glm::dvec3(vb.normal) + v * glm::dvec3(vc.normal);
   hit.shadingNormal = glm::dmat3(geometry.normalToWorld) * normal;
   hit.uv = glm::vec2(w * glm::dvec2(va.uv) + u * glm::dvec2(vb.uv) + v * glm::dvec2(vc.uv));
+  // shading.glsl's uvPerMetre: the root of the triangle's area ratio, uv over world.
+  const glm::dvec2 uvEdge1 = glm::dvec2(vb.uv) - glm::dvec2(va.uv), uvEdge2 = glm::dvec2(vc.uv) - glm::dvec2(va.uv);
+  const double area = glm::length(glm::cross(edge1, edge2));
+  hit.uvPerMetre = area > 0.0 ? static_cast<float>(std::sqrt(std::abs(uvEdge1.x * uvEdge2.y - uvEdge1.y * uvEdge2.x) / area)) : 0.0f;
   return hit;
 }
 

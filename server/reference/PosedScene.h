@@ -39,6 +39,7 @@ struct SurfaceHit {
   glm::dvec3 geometricNormal{0.0};  // world, unit: the triangle's winding normal or the quadric's outward one
   glm::dvec3 shadingNormal{0.0};    // world, not unit: interpolated like the rasterizer's, or the exact normal
   glm::vec2 uv{0.0f};
+  float uvPerMetre = 0.0f;  // how fast uv changes across the hit triangle; 0 on exact surfaces (textures at their finest)
   std::optional<unsigned> analyticGeometry;  // the geometry ID when the hit is on an analytic surface or patches
 };
 

@@ -16,9 +16,9 @@ PrimaryRays::PrimaryRays(const math::Camera& camera, int width, int height)
   halfExtent_ = {tanHalf * size_.x / size_.y, tanHalf};
 }
 
-glm::dvec3 PrimaryRays::direction(int column, int row) const {
-  const double x = 2.0 * (column + 0.5) / size_.x - 1.0;
-  const double y = 1.0 - 2.0 * (row + 0.5) / size_.y;
+glm::dvec3 PrimaryRays::direction(int column, int row, glm::vec2 offset) const {
+  const double x = 2.0 * (column + 0.5 + offset.x) / size_.x - 1.0;
+  const double y = 1.0 - 2.0 * (row + 0.5 + offset.y) / size_.y;
   return glm::normalize(forward_ + x * halfExtent_.x * right_ + y * halfExtent_.y * up_);
 }
 

@@ -13,8 +13,11 @@ class PrimaryRays {
   PrimaryRays(const math::Camera& camera, int width, int height);
 
   const glm::vec3& origin() const { return origin_; }
-  // Unit world direction through the centre of pixel (column, row).
-  glm::dvec3 direction(int column, int row) const;
+  // Unit world direction through the centre of pixel (column, row), or `offset` pixels from it
+  // (x to the right, y down: math::samplePattern's sample points).
+  glm::dvec3 direction(int column, int row, glm::vec2 offset = glm::vec2(0.0f)) const;
+  // The view axis, world, unit.
+  glm::dvec3 forward() const { return forward_; }
 
  private:
   glm::vec3 origin_;

@@ -5,16 +5,20 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
 
+#include "math/SamplePattern.h"
 #include "reference/EmbreeError.h"
 #include "reference/PosedScene.h"
 #include "reference/PrimaryRays.h"
 #include "reference/RayOffset.h"
 #include "reference/SrgbEncoding.h"
 #include "reference/SurfaceShader.h"
+#include "reference/TextureSampler.h"
 
 namespace specula::reference {
 
@@ -31,23 +35,34 @@ struct Tracing {
   const PosedScene& posed;
   const SurfaceShader& shader;
   int maxBounces;
+  float pixelAngle;  // radians a pixel spans on the view axis: the spread of a pixel's ray cone
 };
 
-glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray, int bounce);
+// How far a ray's cone has come: the path length to the ray's origin, and how deep its eye ray goes
+// per unit of length (a pixel's footprint grows with the eye ray's depth, as the rasterizer's does).
+struct RayCone {
+  double travelled = 0.0;
+  double eyeDepthPerLength = 1.0;
+};
+
+glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray, const RayCone& cone, int bounce);
 
 // Linear colour seen along a reflected ray.
-glm::vec3 reflectedColor(const Tracing& tracing, const Ray& ray, int bounce, const Departure* departure) {
+glm::vec3 reflectedColor(const Tracing& tracing, const Ray& ray, const RayCone& cone, int bounce, const Departure* departure) {
   const auto hit = tracing.posed.intersect(ray, kSeenInMirrors, departure);
-  return hit ? shadeHit(tracing, *hit, ray, bounce) : tracing.scene.background;
+  return hit ? shadeHit(tracing, *hit, ray, cone, bounce) : tracing.scene.background;
 }
 
 // Linear colour of a hit reached after `bounce` reflections.
-glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray, int bounce) {
+glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray, const RayCone& cone, int bounce) {
   const scene::SceneObject& object = tracing.scene.objects[hit.object];
   const scene::Material& material = tracing.scene.materials[object.material];
+  const double pathLength = cone.travelled + glm::length(hit.position - glm::dvec3(ray.origin));
+  const float footprint = pixelFootprint(static_cast<float>(pathLength), static_cast<float>(cone.eyeDepthPerLength), tracing.pixelAngle,
+                                         static_cast<float>(glm::dot(glm::dvec3(ray.direction), hit.geometricNormal)));
   // The viewer is where the ray comes from (the eye, or a mirror point), which decides the lit side.
-  const glm::vec3 surface =
-      tracing.shader.shade(material, glm::vec3(hit.position), glm::vec3(hit.shadingNormal), hit.uv, ray.origin);
+  const glm::vec3 surface = tracing.shader.shade(material, glm::vec3(hit.position), glm::vec3(hit.shadingNormal), hit.uv,
+                                                 footprint * hit.uvPerMetre, ray.origin);
   // Past the last bounce a mirror is an ordinary surface, as a rasterized virtual object of it would be.
   if (!object.mirror || material.reflectivity <= 0.0f || bounce >= tracing.maxBounces) return surface;
 
@@ -60,7 +75,8 @@ glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray
   std::optional<Departure> departure;
   if (hit.analyticGeometry)
     departure = Departure{*hit.analyticGeometry, {hit.position, glm::dot(incoming, hit.geometricNormal) < 0.0}};
-  const glm::vec3 mirrored = reflectedColor(tracing, next, bounce + 1, departure ? &*departure : nullptr);
+  const glm::vec3 mirrored =
+      reflectedColor(tracing, next, {pathLength, cone.eyeDepthPerLength}, bounce + 1, departure ? &*departure : nullptr);
   return (1.0f - material.reflectivity) * surface + material.reflectivity * mirrored;
 }
 
@@ -99,6 +115,7 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
   if (pixels > kMaxPixels)
     return Error{"RayTracer::render(): image size " + size + " exceeds " + std::to_string(kMaxPixels) +
                  " pixels; render a smaller image"};
+  if (auto problem = math::sampleCountProblem(options.samples)) return Error{"RayTracer::render(): " + *problem};
   if (options.maxBounces < 0)
     return Error{"RayTracer::render(): maxBounces " + std::to_string(options.maxBounces) +
                  " is negative; pass 0 to show mirrors without reflections"};
@@ -107,8 +124,10 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
   auto posed = PosedScene::build(device_, *scene_, pose);
   if (!posed) return Error{"RayTracer::render(): " + posed.error()};
   const SurfaceShader shader(*scene_);
-  const Tracing tracing{*scene_, **posed, shader, options.maxBounces};
   const PrimaryRays rays(pose.camera, options.width, options.height);
+  const auto pixelAngle = static_cast<float>(2.0 * std::tan(glm::radians(static_cast<double>(pose.camera.fovYDegrees)) / 2.0) / options.height);
+  const Tracing tracing{*scene_, **posed, shader, options.maxBounces, pixelAngle};
+  const std::span<const glm::vec2> samples = math::samplePattern(options.samples);
 
   ReferenceImage image;
   image.width = options.width;
@@ -119,10 +138,17 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
     for (int column = 0; column < options.width; ++column) {
       const std::size_t pixel =
           static_cast<std::size_t>(row) * static_cast<std::size_t>(options.width) + static_cast<std::size_t>(column);
-      const Ray primary{rays.origin(), glm::vec3(rays.direction(column, row))};
-      const auto hit = tracing.posed.intersect(primary, kSeenDirectly, nullptr);
-      image.mirrorMask[pixel] = hit && scene_->objects[hit->object].mirror ? 1 : 0;
-      writeSrgb8(hit ? shadeHit(tracing, *hit, primary, 0) : scene_->background, &image.rgba[4 * pixel]);
+      glm::vec3 sum(0.0f);
+      std::size_t mirrorSamples = 0;
+      for (const glm::vec2& offset : samples) {
+        const glm::dvec3 direction = rays.direction(column, row, offset);
+        const Ray primary{rays.origin(), glm::vec3(direction)};
+        const auto hit = tracing.posed.intersect(primary, kSeenDirectly, nullptr);
+        if (hit && scene_->objects[hit->object].mirror) ++mirrorSamples;
+        sum += hit ? shadeHit(tracing, *hit, primary, {0.0, glm::dot(direction, rays.forward())}, 0) : scene_->background;
+      }
+      image.mirrorMask[pixel] = 2 * mirrorSamples > samples.size() ? 1 : 0;
+      writeSrgb8(sum / static_cast<float>(samples.size()), &image.rgba[4 * pixel]);
     }
   };
   const unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());

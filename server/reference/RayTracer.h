@@ -23,18 +23,23 @@ struct RayTracerOptions {
   // Workers sharing the image rows; 0: std::thread::hardware_concurrency(). (Embree builds its
   // acceleration structure on its own TBB threads.)
   unsigned threads = 0;
+  // Rays per pixel, through math::samplePattern's points (the rasterizer's anti-aliased frames take
+  // the same), their linear colours averaged: 1, 2, 4, 8 or 16.
+  int samples = 1;
 };
 
 struct ReferenceImage {
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgba;  // sRGB bytes as a GL sRGB8 framebuffer stores them, row 0 at the top
-  // One per pixel, row 0 at the top: 1 where the primary ray hit an object with SceneObject::mirror, else 0.
+  // One per pixel, row 0 at the top: 1 where more than half the primary rays hit an object with
+  // SceneObject::mirror, else 0.
   std::vector<std::uint8_t> mirrorMask;
   double milliseconds = 0.0;  // wall time of render(), building the acceleration structure included
 };
 
-// Per pixel: one primary ray through the pixel centre (no antialiasing). At a hit: the colour of
+// Per pixel: one primary ray through the pixel centre, or `samples` through the sample points, averaged.
+// Textures are filtered over the pixel's ray cone (shading.glsl's pixelFootprint). At a hit: the colour of
 // shaders/common/shading.glsl; at a mirror (SceneObject::mirror with reflectivity r > 0, bounces left)
 // (1 − r) · that colour + r · the colour seen along the ray reflected about the surface normal;
 // nothing hit: the scene background. Colours are linear until the final sRGB encoding.

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "reference/TextureSampler.h"
+
 namespace specula::reference {
 
 namespace {
 
-glm::vec3 surfaceColor(const scene::Material& material, const glm::vec2& uv) {
+glm::vec3 checkerColor(const scene::Material& material, const glm::vec2& uv) {
   if (!material.checker) return material.baseColor;
   const glm::vec2 scaled = uv * material.checker->cellsPerUnit;
   const auto cellX = static_cast<std::int64_t>(std::floor(scaled.x));
@@ -18,7 +20,7 @@ glm::vec3 surfaceColor(const scene::Material& material, const glm::vec2& uv) {
 
 }  // namespace
 
-SurfaceShader::SurfaceShader(const scene::Scene& scene) : ambient_(scene.ambient) {
+SurfaceShader::SurfaceShader(const scene::Scene& scene) : textures_(scene.textures), ambient_(scene.ambient) {
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const scene::Light& light = scene.lights[i];
     const float w = light.kind == scene::Light::Kind::Point ? 1.0f : 0.0f;
@@ -27,8 +29,9 @@ SurfaceShader::SurfaceShader(const scene::Scene& scene) : ambient_(scene.ambient
 }
 
 glm::vec3 SurfaceShader::shade(const scene::Material& material, const glm::vec3& position, const glm::vec3& normal,
-                               const glm::vec2& uv, const glm::vec3& viewer) const {
-  const glm::vec3 albedo = surfaceColor(material, uv);
+                               const glm::vec2& uv, float uvFootprint, const glm::vec3& viewer) const {
+  glm::vec3 albedo = checkerColor(material, uv);
+  if (material.texture) albedo *= glm::vec3(sampleTexture(textures_[*material.texture], uv, uvFootprint));
   if (material.unlit) return albedo;
   glm::vec3 n = glm::normalize(normal);
   if (glm::dot(n, viewer - position) < 0.0f) n = -n;

@@ -12,10 +12,11 @@ class SurfaceShader {
  public:
   explicit SurfaceShader(const scene::Scene& scene);
 
-  // Linear RGB of a surface point seen from `viewer` (world space): shadeSurface() of shading.glsl.
-  // `normal` need not be unit (it is normalised, as the fragment shader does).
+  // Linear RGB of a surface point seen from `viewer` (world space): shadeSurfaceOver() of shading.glsl,
+  // the material's texture filtered over `uvFootprint` uv units. `normal` need not be unit (it is
+  // normalised, as the fragment shader does).
   glm::vec3 shade(const scene::Material& material, const glm::vec3& position, const glm::vec3& normal,
-                  const glm::vec2& uv, const glm::vec3& viewer) const;
+                  const glm::vec2& uv, float uvFootprint, const glm::vec3& viewer) const;
 
  private:
   struct ShaderLight {
@@ -23,6 +24,7 @@ class SurfaceShader {
     glm::vec3 color;   // colour × intensity
   };
 
+  const std::vector<scene::Texture>& textures_;
   glm::vec3 ambient_;
   std::vector<ShaderLight> lights_;
 };

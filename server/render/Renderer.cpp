@@ -9,6 +9,7 @@
 #include "gl/GlObject.h"
 #include "gl/RenderTarget.h"
 #include "math/Camera.h"
+#include "math/SamplePattern.h"
 #include "passes/EnvironmentMapPass.h"
 #include "passes/FramePlan.h"
 #include "passes/GBufferPyramidPass.h"
@@ -58,6 +59,7 @@ Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> s
     : context_(context),
       scene_(std::move(scene)),
       meshes_(context.api(), scene_->meshes),
+      textures_(context.api(), scene_->textures),
       slots_(std::move(slots)),
       reflections_(context.api(), *scene_, slots_),
       cpuRasterizer_(isCpuRasterizer(context.info().renderer)) {
@@ -112,9 +114,10 @@ passes::FrameView Renderer::frameView(const math::Camera& camera, const std::vec
 }
 
 Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, int height,
-                                       const passes::ReflectionSettings& settings) {
+                                       const passes::ReflectionSettings& settings, int samples) {
   if (auto problem = math::cameraProblem(pose.camera)) return Error{"cannot render: " + *problem};
   if (auto problem = passes::reflectionSettingsProblem(settings)) return Error{"cannot render: " + *problem};
+  if (auto problem = math::sampleCountProblem(samples)) return Error{"cannot render: " + *problem};
   const Clock::time_point start = Clock::now();
   const gl::GlApi& gl = context_.api();
   if (!target_ || target_->width() != width || target_->height() != height) {
@@ -129,7 +132,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   for (std::size_t i = 0; i < scene_->objects.size(); ++i)
     worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
+  passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
   const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, {width, height}, settings);
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
@@ -137,25 +140,56 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, plan.gbufferPrecision); !status)
       return Error{status.error()};
   }
-  const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, view, plan, settings, *target_, reflections_};
+  const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, textures_, view, plan, settings, *target_, reflections_};
 
   // Stage i runs between marks i and i + 1: GPU timestamps, or on a CPU rasterizer, which runs a
   // pass's draws only when a later command flushes them (timestamps there charged the scene pass's
-  // rasterization to whichever pass came next), the wall clock after the pass has finished.
-  const std::size_t marks = plan.passes.size() + 2;
-  while (stamps_.size() < marks) stamps_.emplace_back(gl);
+  // rasterization to whichever pass came last), the wall clock after the pass has finished.
+  std::vector<std::string_view> stages;  // stage i ran between marks i and i + 1
   std::vector<double> wallMarks;
-  const auto mark = [&](std::size_t i) {
-    if (!cpuRasterizer_) return gl.QueryCounter(stamps_[i].id(), GL_TIMESTAMP);
-    gl.Finish();
-    wallMarks.push_back(millisecondsSince(start));
+  std::size_t marks = 0;
+  const auto mark = [&] {
+    if (cpuRasterizer_) {
+      gl.Finish();
+      wallMarks.push_back(millisecondsSince(start));
+    } else {
+      while (stamps_.size() <= marks) stamps_.emplace_back(gl);
+      gl.QueryCounter(stamps_[marks].id(), GL_TIMESTAMP);
+    }
+    ++marks;
   };
-  mark(0);
-  for (std::size_t i = 0; i < plan.passes.size(); ++i) {
-    passes_.find(plan.passes[i])->second->execute(frame);
-    mark(i + 1);
+  const auto endStage = [&](std::string_view name) {
+    stages.push_back(name);
+    mark();
+  };
+  mark();
+  // An anti-aliased frame is the plan's passes once per sample point, averaged (SampleAccumulator).
+  const std::span<const glm::vec2> points = math::samplePattern(samples);
+  if (samples > 1) {
+    if (!accumulator_) {
+      auto accumulator = SampleAccumulator::create(gl);
+      if (!accumulator) return Error{accumulator.error()};
+      accumulator_.emplace(std::move(accumulator.value()));
+    }
+    if (Status status = accumulator_->begin(*target_); !status) return Error{status.error()};
   }
-  RenderedFrame result{width, height, target_->readRgba(), {}, {}, {}, view, {}, plan.gbufferPrecision, {}};
+  for (const glm::vec2& point : points) {
+    view.jitterClip = glm::vec2(2.0f * point.x / static_cast<float>(width), -2.0f * point.y / static_cast<float>(height));
+    for (std::string_view pass : plan.passes) {
+      passes_.find(pass)->second->execute(frame);
+      endStage(pass);
+    }
+    if (samples > 1) {
+      accumulator_->add(*target_, 1.0f / static_cast<float>(samples));
+      endStage("anti-aliasing");
+    }
+  }
+  if (samples > 1) {
+    accumulator_->resolve(*target_);
+    endStage("anti-aliasing");
+  }
+  view.jitterClip = glm::vec2(0.0f);  // the frame's view is the unshifted one
+  RenderedFrame result{width, height, samples, target_->readRgba(), {}, {}, {}, frame.view, {}, plan.gbufferPrecision, {}};
   for (const passes::PlannedMirror& mirror : plan.mirrors) {
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
     MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part,   mirror.slots->kind,     mirror.method,
@@ -180,7 +214,7 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     const std::vector<passes::CastTileCount> tiles = virtualObjects_->readCastTileCounts();
     for (std::size_t i = 0; i < tiles.size() && i < result.plan.size(); ++i) result.plan[i].castTiles = tiles[i];
   }
-  mark(marks - 1);
+  endStage("readback");
   // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
   if (plan.search) result.search = reflections_.readStatistics();
   if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();
@@ -195,9 +229,12 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     gl.GetQueryObjectui64v(stamps_[i].id(), GL_QUERY_RESULT, &nanoseconds);
     times[i] = static_cast<double>(nanoseconds) * 1e-6;
   }
-  for (std::size_t i = 0; i + 1 < marks; ++i) {
-    const std::string name = i < plan.passes.size() ? std::string(plan.passes[i]) : "readback";
-    result.timings.stages.push_back({name, times[i + 1] - times[i]});
+  // A stage run once per sample point is reported once, its times summed, in the order first run.
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    const auto same = [&](const StageTiming& stage) { return stage.name == stages[i]; };
+    auto found = std::find_if(result.timings.stages.begin(), result.timings.stages.end(), same);
+    if (found == result.timings.stages.end()) found = result.timings.stages.insert(found, {std::string(stages[i]), 0.0});
+    found->milliseconds += times[i + 1] - times[i];
   }
   if (const GLenum error = gl.GetError(); error != GL_NO_ERROR)
     return Error{"GL error 0x" + std::to_string(error) + " while rendering (driver: " + context_.info().renderer + ")"};

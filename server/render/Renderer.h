@@ -11,6 +11,7 @@
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMeshes.h"
+#include "gl/GpuTextures.h"
 #include "gl/RenderTarget.h"
 #include "math/Bounds.h"
 #include "passes/FrameContext.h"
@@ -20,6 +21,7 @@
 #include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
 #include "render/FrameTimings.h"
+#include "render/SampleAccumulator.h"
 #include "scene/Scene.h"
 #include "scene/ScenePose.h"
 
@@ -49,6 +51,7 @@ struct MirrorPlanSummary {
 
 struct RenderedFrame {
   int width = 0, height = 0;
+  int samples = 1;  // anti-aliasing: the passes ran once per sample point, their times summed; statistics are the last run's
   std::vector<std::uint8_t> rgba;  // sRGB, tightly packed, row 0 at the top
   FrameTimings timings;
   std::vector<std::size_t> drawnMirrors;  // scene object indices of the mirrors searched and drawn
@@ -66,9 +69,10 @@ class Renderer {
   static Result<std::unique_ptr<Renderer>> create(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene);
   ~Renderer();
 
-  // Renders the scene at `pose` (its camera included) into a width × height frame.
+  // Renders the scene at `pose` (its camera included) into a width × height frame, anti-aliased with
+  // `samples` points a pixel (math::samplePattern; 1, 2, 4, 8 or 16): the passes run once per point.
   Result<RenderedFrame> render(const scene::ScenePose& pose, int width, int height,
-                               const passes::ReflectionSettings& settings = {});
+                               const passes::ReflectionSettings& settings = {}, int samples = 1);
 
   // Forgets last frame's reflection texels: the next frame's searches start cold.
   void resetCoherence() { reflections_.resetCoherence(); }
@@ -104,12 +108,14 @@ class Renderer {
   gl::GlContext& context_;
   std::shared_ptr<const scene::Scene> scene_;
   gl::GpuMeshes meshes_;
+  gl::GpuTextures textures_;
   std::vector<math::Bounds> meshBounds_;  // object space, per mesh
   passes::ReflectionSlots slots_;
   passes::ReflectionResources reflections_;
   std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>> passes_;
   passes::VirtualObjectsPass* virtualObjects_ = nullptr;  // in passes_
   std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
+  std::optional<SampleAccumulator> accumulator_;  // built on the first anti-aliased frame
   std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
   std::optional<passes::PatchTessellationProbe> patchProbe_;  // built on first use
   bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "math/Transform.h"
 #include "scene/AssetFiles.h"
@@ -113,8 +114,30 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
   return false;
 }
 
-// Textures are not rendered, so images are neither decoded nor checked.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// The file's images decoded (scene import), by glTF image index; a single mesh's import leaves them undecoded.
+struct DecodedImages {
+  bool decode = false;
+  std::map<int, Texture> textures;
+  std::size_t texels = 0;
+  std::string unread;  // why an image could not be read, when tinygltf skipped one with a warning
+};
+
+// tinygltf's image callback, handed each image's encoded bytes (from a file, a data: URI or a buffer view).
+bool decodeImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int, const unsigned char* bytes,
+                 int size, void* user) {
+  auto& images = *static_cast<DecodedImages*>(user);
+  if (!images.decode) return true;
+  const std::string name = "image " + std::to_string(index) + (image->uri.empty() || image->uri.starts_with("data:") ? "" : " (" + image->uri + ")");
+  Result<Texture> texture = decodeTexture({reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(std::max(size, 0))}, name);
+  if (!texture) {
+    *err = texture.error();
+    return false;
+  }
+  if ((images.texels += texture->texelCount()) > kMaxTexelsPerScene) {
+    *err = name + ": the file's images hold more than " + std::to_string(kMaxTexelsPerScene) + " texels with their mip chains; use smaller images";
+    return false;
+  }
+  images.textures.emplace(index, std::move(texture).value());
   return true;
 }
 
@@ -386,7 +409,7 @@ Result<std::size_t> selectMesh(const tinygltf::Model& model, const GltfMeshSelec
 
 // The parsed, checked asset: GLB framing, JSON depth and declared buffer sizes first, then tinygltf
 // with file access confined to `folder`.
-Result<tinygltf::Model> loadModel(std::string_view bytes, const fs::path& folder) {
+Result<tinygltf::Model> loadModel(std::string_view bytes, const fs::path& folder, DecodedImages& images) {
   if (bytes.empty()) return Error{"empty file; expected glTF JSON or a GLB container"};
   const bool binary = bytes.starts_with("glTF");
   Result<std::string_view> json = binary ? glbJsonChunk(bytes) : Result<std::string_view>(bytes);
@@ -398,7 +421,7 @@ Result<tinygltf::Model> loadModel(std::string_view bytes, const fs::path& folder
 
   AssetFolder assets{folder, kMaxAssetFileBytes, {}};
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skipImage, nullptr);
+  loader.SetImageLoader(&decodeImage, &images);
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &assets});
   tinygltf::Model model;
   std::string error, warning;
@@ -415,6 +438,7 @@ Result<tinygltf::Model> loadModel(std::string_view bytes, const fs::path& folder
   } catch (const std::exception& e) {
     return Error{"cannot be parsed: " + std::string(e.what())};
   }
+  images.unread = assets.refusal.empty() ? oneLine(warning) : assets.refusal;
   return model;
 }
 
@@ -439,6 +463,13 @@ Result<Mesh> readMesh(const tinygltf::Model& model, std::size_t index, std::stri
 
 // What a glTF material is here: base colour factor (glTF holds linear RGB) and, where it is metallic
 // and smooth enough to be a mirror, its reflectivity. Textures are not read yet.
+// A glTF sampler's wrap mode (GL's enum values).
+TextureWrap wrapFrom(int mode) {
+  if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::ClampToEdge;
+  if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::MirroredRepeat;
+  return TextureWrap::Repeat;
+}
+
 Result<Material> materialFrom(const tinygltf::Material& source, std::size_t index, bool& chrome) {
   Material material;
   material.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
@@ -519,7 +550,8 @@ math::Camera framingCamera(const Scene& scene) {
   return camera;
 }
 
-Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const GltfSceneChoice& choice, std::string name) {
+Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const DecodedImages& decoded, const GltfSceneChoice& choice,
+                                         std::string name) {
   ImportedGltfScene imported;
   Scene& scene = imported.scene;
   scene.name = std::move(name);
@@ -529,6 +561,42 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Glt
   if (chosen >= model.scenes.size())
     return Error{"there is no scene " + std::to_string(chosen) + " (the file has " + std::to_string(model.scenes.size()) +
                  "; pick one with --gltf-scene 0.." + std::to_string(model.scenes.size() - 1) + ")"};
+
+  // Base colour textures: glTF textures pair an image with a sampler; one scene texture per pair used.
+  std::map<std::tuple<int, TextureWrap, TextureWrap>, std::uint32_t> textures;
+  const auto textureOf = [&](const tinygltf::TextureInfo& info, std::size_t material) -> Result<std::optional<std::uint32_t>> {
+    if (info.index < 0) return std::optional<std::uint32_t>();
+    const std::string where = "material " + std::to_string(material) + ": baseColorTexture ";
+    if (static_cast<std::size_t>(info.index) >= model.textures.size())
+      return Error{where + "refers to texture " + std::to_string(info.index) + ", but the file has " + std::to_string(model.textures.size())};
+    if (info.texCoord != 0) {
+      imported.notes.push_back(where + "reads TEXCOORD_" + std::to_string(info.texCoord) + "; only TEXCOORD_0 is read, so it is left out");
+      return std::optional<std::uint32_t>();
+    }
+    if (info.extensions.count("KHR_texture_transform") > 0)
+      imported.notes.push_back(where + "has a KHR_texture_transform, which is not applied");
+    const tinygltf::Texture& texture = model.textures[static_cast<std::size_t>(info.index)];
+    const auto image = decoded.textures.find(texture.source);
+    if (image == decoded.textures.end())
+      return Error{where + "(texture " + std::to_string(info.index) + "): its image " + std::to_string(texture.source) +
+                   " was not read (" + (decoded.unread.empty() ? "extensions such as KHR_texture_basisu are not read" : decoded.unread) + ")"};
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
+    if (texture.sampler >= 0) {
+      if (static_cast<std::size_t>(texture.sampler) >= model.samplers.size())
+        return Error{where + "(texture " + std::to_string(info.index) + ") refers to sampler " + std::to_string(texture.sampler) +
+                     ", but the file has " + std::to_string(model.samplers.size())};
+      const tinygltf::Sampler& sampler = model.samplers[static_cast<std::size_t>(texture.sampler)];
+      wrapU = wrapFrom(sampler.wrapS);
+      wrapV = wrapFrom(sampler.wrapT);
+    }
+    const auto key = std::make_tuple(texture.source, wrapU, wrapV);
+    if (const auto found = textures.find(key); found != textures.end()) return std::optional<std::uint32_t>(found->second);
+    Texture copy = image->second;
+    copy.wrapU = wrapU;
+    copy.wrapV = wrapV;
+    scene.textures.push_back(std::move(copy));
+    return std::optional<std::uint32_t>(textures[key] = static_cast<std::uint32_t>(scene.textures.size() - 1));
+  };
 
   // Materials as primitives use them; -1 (none) gets glTF's default, a light grey here.
   std::map<int, std::pair<std::uint32_t, bool>> materials;  // glTF index -> scene index, chrome
@@ -542,9 +610,13 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Glt
     if (index < 0) {
       material.name = "default";
     } else {
-      Result<Material> converted = materialFrom(model.materials[static_cast<std::size_t>(index)], static_cast<std::size_t>(index), chrome);
+      const tinygltf::Material& source = model.materials[static_cast<std::size_t>(index)];
+      Result<Material> converted = materialFrom(source, static_cast<std::size_t>(index), chrome);
       if (!converted) return Error{converted.error()};
       material = std::move(converted.value());
+      Result<std::optional<std::uint32_t>> texture = textureOf(source.pbrMetallicRoughness.baseColorTexture, static_cast<std::size_t>(index));
+      if (!texture) return Error{texture.error()};
+      material.texture = *texture;
     }
     scene.materials.push_back(std::move(material));
     return materials[index] = {static_cast<std::uint32_t>(scene.materials.size() - 1), chrome};
@@ -698,7 +770,8 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Glt
 Result<Mesh> importGltf(const fs::path& file, const GltfMeshSelector& which, std::string meshName) {
   Result<std::string> bytes = readBoundedFile(file, kMaxAssetFileBytes);
   if (!bytes) return Error{bytes.error()};
-  Result<tinygltf::Model> model = loadModel(bytes.value(), file.parent_path());
+  DecodedImages images;  // a mesh for a JSON scene draws in the scene's materials: its images are not read
+  Result<tinygltf::Model> model = loadModel(bytes.value(), file.parent_path(), images);
   if (!model) return Error{file.string() + ": " + model.error()};
   Result<std::size_t> chosen = selectMesh(model.value(), which);
   if (!chosen) return Error{file.string() + ": " + chosen.error()};
@@ -710,9 +783,10 @@ Result<Mesh> importGltf(const fs::path& file, const GltfMeshSelector& which, std
 Result<ImportedGltfScene> importGltfScene(const fs::path& file, const GltfSceneChoice& choice) {
   Result<std::string> bytes = readBoundedFile(file, kMaxAssetFileBytes);
   if (!bytes) return Error{bytes.error()};
-  Result<tinygltf::Model> model = loadModel(bytes.value(), file.parent_path());
+  DecodedImages images{true, {}, 0, {}};
+  Result<tinygltf::Model> model = loadModel(bytes.value(), file.parent_path(), images);
   if (!model) return Error{file.string() + ": " + model.error()};
-  Result<ImportedGltfScene> scene = sceneFromModel(model.value(), choice, file.stem().string());
+  Result<ImportedGltfScene> scene = sceneFromModel(model.value(), images, choice, file.stem().string());
   if (!scene) return Error{file.string() + ": " + scene.error()};
   return scene;
 }

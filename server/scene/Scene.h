@@ -9,6 +9,7 @@
 #include "scene/Material.h"
 #include "scene/Mesh.h"
 #include "scene/SceneObject.h"
+#include "scene/Texture.h"
 
 namespace specula::scene {
 
@@ -22,6 +23,7 @@ struct Scene {
   std::string name;
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
+  std::vector<Texture> textures;  // what materials' `texture` indices name
   std::vector<SceneObject> objects;
   std::vector<Light> lights;
   glm::vec3 ambient{0.05f};    // linear RGB added to every lit surface

@@ -1,5 +1,6 @@
 #include "scene/SceneChecks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -57,6 +58,22 @@ std::optional<std::string> extrusionMeshProblem(const Mesh& mesh, const math::Ex
   return std::nullopt;
 }
 
+// The levels must be the chain decodeTexture builds: the GPU uploads them as they are.
+std::optional<std::string> textureProblem(const Texture& texture) {
+  if (texture.levels.empty()) return "has no texels";
+  for (std::size_t i = 0; i < texture.levels.size(); ++i) {
+    const TextureLevel& level = texture.levels[i];
+    const int expectedWidth = i == 0 ? level.width : std::max(1, texture.levels[i - 1].width / 2);
+    const int expectedHeight = i == 0 ? level.height : std::max(1, texture.levels[i - 1].height / 2);
+    if (level.width < 1 || level.height < 1 || level.width > kMaxTextureSide || level.height > kMaxTextureSide ||
+        level.width != expectedWidth || level.height != expectedHeight ||
+        level.rgba.size() != static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height) * 4)
+      return "level " + std::to_string(i) + " is not the mip chain's; build textures with scene::decodeTexture";
+  }
+  if (texture.levels.back().width != 1 || texture.levels.back().height != 1) return "its mip chain stops before 1x1";
+  return std::nullopt;
+}
+
 std::optional<std::string> transformProblem(const math::Transform& t) {
   if (!finite(t)) return "transform has a non-finite value";
   if (std::abs(glm::length(t.rotation) - 1.0f) > 1e-3f) return "rotation quaternion is not unit length";
@@ -82,7 +99,16 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
     if (m.checker && (!inUnitRange(m.checker->oddColor) || !(m.checker->cellsPerUnit > 0.0f) ||
                       !finite(m.checker->cellsPerUnit)))
       return "material '" + m.name + "': checker needs a finite colour and cellsPerUnit > 0";
+    if (m.texture && *m.texture >= scene.textures.size()) return "material '" + m.name + "': texture index out of range";
   }
+  std::size_t texels = 0;
+  for (const Texture& texture : scene.textures) {
+    if (auto problem = textureProblem(texture)) return "texture '" + texture.name + "': " + *problem;
+    texels += texture.texelCount();
+  }
+  if (texels > kMaxTexelsPerScene)
+    return "the textures hold " + std::to_string(texels) + " texels with their mip chains, more than the limit of " +
+           std::to_string(kMaxTexelsPerScene) + " a scene; use smaller images";
   std::set<std::string> names;
   for (const SceneObject& o : scene.objects) {
     const std::string where = "object '" + o.name + "': ";

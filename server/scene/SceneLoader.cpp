@@ -4,6 +4,7 @@
 #include <cctype>
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "math/BSplineSurface.h"
@@ -273,11 +274,49 @@ Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) 
   return std::move(split).value();
 }
 
-Material readMaterial(const JsonNode& node, NameIndex& materials) {
-  node.expectObject({"name", "color", "unlit", "checker", "reflectivity"});
+// Textures by the file and wrap mode that made them, so materials sharing an image decode it once.
+struct TextureFiles {
+  std::map<std::pair<fs::path, TextureWrap>, std::uint32_t> loaded;
+  std::size_t texels = 0;
+};
+
+// "file.png" or {"file": "file.png", "wrap": "repeat" | "clamp" | "mirror"}: an image beside the scene.
+std::uint32_t readTexture(const JsonNode& node, const fs::path& baseDir, Scene& scene, TextureFiles& files) {
+  const JsonNode file = node.isString() ? node : node.at("file");
+  TextureWrap wrap = TextureWrap::Repeat;
+  if (!node.isString()) {
+    node.expectObject({"file", "wrap"});
+    if (const auto mode = node.find("wrap")) {
+      if (mode->string() == "clamp")
+        wrap = TextureWrap::ClampToEdge;
+      else if (mode->string() == "mirror")
+        wrap = TextureWrap::MirroredRepeat;
+      else if (mode->string() != "repeat")
+        mode->fail("unknown wrap " + JsonNode::quoted(mode->string()) + "; use repeat, clamp or mirror");
+    }
+  }
+  Result<fs::path> path = resolveInside(baseDir, file.string());
+  if (!path) file.fail(path.error());
+  if (const auto known = files.loaded.find({*path, wrap}); known != files.loaded.end()) return known->second;
+  Result<std::string> bytes = readBoundedFile(*path, kMaxAssetFileBytes);
+  if (!bytes) file.fail(bytes.error());
+  Result<Texture> texture = decodeTexture(*bytes, path->filename().string());
+  if (!texture) file.fail(texture.error());
+  if ((files.texels += texture->texelCount()) > kMaxTexelsPerScene)
+    file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) + " texels with this one; use smaller images");
+  texture->wrapU = texture->wrapV = wrap;
+  scene.textures.push_back(std::move(texture).value());
+  return files.loaded[{*path, wrap}] = static_cast<std::uint32_t>(scene.textures.size() - 1);
+}
+
+// A material; "color" may be left out when a texture gives the colour (it then multiplies white).
+Material readMaterial(const JsonNode& node, NameIndex& materials, const fs::path& baseDir, Scene& scene, TextureFiles& textures) {
+  node.expectObject({"name", "color", "unlit", "checker", "reflectivity", "texture"});
   Material material;
   material.name = materials.add(node.at("name"));
-  material.baseColor = readColor(node.at("color"));
+  const std::optional<JsonNode> texture = node.find("texture");
+  if (texture) material.texture = readTexture(*texture, baseDir, scene, textures);
+  material.baseColor = texture && !node.find("color") ? glm::vec3(1.0f) : readColor(node.at("color"));
   if (const auto unlit = node.find("unlit")) material.unlit = unlit->boolean();
   if (const auto reflectivity = node.find("reflectivity"))
     material.reflectivity = static_cast<float>(reflectivity->inRange(0.0, 1.0));
@@ -479,8 +518,9 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
       node.fail("meshes hold " + std::to_string(meshVertices) + " vertices so far, more than the scene limit of " +
                 std::to_string(kMaxVerticesPerScene));
   }
+  TextureFiles textures;
   for (const JsonNode& node : root.at("materials").array(1, kMaxEntities))
-    scene.materials.push_back(readMaterial(node, names.materials));
+    scene.materials.push_back(readMaterial(node, names.materials, baseDir, scene, textures));
   std::size_t vertices = 0, triangles = 0;
   for (const JsonNode& node : root.at("objects").array(1, kMaxEntities)) {
     scene.objects.push_back(readObject(node, names));

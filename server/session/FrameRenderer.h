@@ -19,6 +19,7 @@ struct RenderJob {
   scene::ScenePose pose;
   int width = 0, height = 0;
   passes::ReflectionSettings settings;
+  int samples = 1;  // anti-aliasing: samples a pixel (math::samplePattern)
 
   bool operator==(const RenderJob&) const = default;
 };

@@ -31,7 +31,7 @@ Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
     lastSession_ = job.session;
   }
   const auto start = std::chrono::steady_clock::now();
-  auto frame = renderer_->render(job.pose, job.width, job.height, job.settings);
+  auto frame = renderer_->render(job.pose, job.width, job.height, job.settings, job.samples);
   if (!frame) return Error{frame.error()};
   RenderOutput out;
   out.renderMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

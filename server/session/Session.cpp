@@ -46,6 +46,8 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   out.set_resolution_scale(settings.resolutionScale);
   out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
   out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
+  out.set_still_samples(static_cast<std::uint32_t>(settings.stillSamples));
+  out.set_interactive_samples(static_cast<std::uint32_t>(settings.interactiveSamples));
   out.set_plan(settings.reflection.plan == passes::PlanScope::Everything ? v1::PLAN_EVERYTHING : v1::PLAN_NEEDED);
   switch (settings.reflection.search) {
     case passes::SearchStrategy::Crosshair: out.set_search(v1::SEARCH_CROSSHAIR); break;
@@ -388,6 +390,12 @@ Status Session::applySettings(const v1::RenderSettings& update) {
     if (value > 100) return Error{"settings: JPEG qualities must be 1..100"};
     *field = static_cast<int>(value);
   }
+  for (auto [value, field] : {std::pair{update.still_samples(), &settings.stillSamples},
+                              {update.interactive_samples(), &settings.interactiveSamples}}) {
+    if (value == 0) continue;
+    if (value > 16 || math::sampleCountProblem(static_cast<int>(value))) return Error{"settings: samples must be 1, 2, 4, 8 or 16"};
+    *field = static_cast<int>(value);
+  }
   state_.settings = settings;
   return {};
 }
@@ -439,6 +447,7 @@ FrameRequest Session::takeFrame(Clock::time_point now) {
   if (state_.camera) request.job.pose.camera = *state_.camera;
   std::tie(request.job.width, request.job.height) = state_.renderSize();
   request.job.settings = state_.settings.reflection;
+  request.job.samples = request.still ? state_.settings.stillSamples : state_.settings.interactiveSamples;
   if (request.still && lastOutput_ && lastJob_ == request.job) request.reuse = lastOutput_;
   dirty_ = false;
   busy_ = true;

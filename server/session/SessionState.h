@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "math/Camera.h"
+#include "math/SamplePattern.h"
 #include "passes/ReflectionSettings.h"
 #include "session/AnimationClock.h"
 
@@ -17,6 +18,8 @@ struct SessionSettings {
   float resolutionScale = 1.0f;  // (0, 1]: frames are rendered this much smaller
   int jpegQuality = 85;          // still frames
   int interactiveQuality = 60;   // frames sent while input keeps arriving
+  int stillSamples = math::kStillFrameSamples;  // anti-aliasing (math::samplePattern) of still frames
+  int interactiveSamples = 1;                    // and of frames sent while input keeps arriving
 };
 
 struct SessionState {

@@ -13,8 +13,9 @@ uniform float surfaceWeight;  // 1 − reflectivity when the mirror's reflection
 layout(location = 0) out vec4 outColor;
 
 void main() {
+  // The finest level, as the reference samples analytic surfaces: uv derivatives past a discard are undefined.
   vec3 position, normal;
   if (!eyeRayHitsQuadric(eyePosition, worldPosition - eyePosition, position, normal)) discard;
-  outColor = vec4(surfaceWeight * shadeSurface(position, normal, quadricUv(position), eyePosition), 1.0);
+  outColor = vec4(surfaceWeight * shadeSurfaceOver(position, normal, quadricUv(position), 0.0, eyePosition), 1.0);
   gl_FragDepth = clipDepth(worldToClip, position);
 }

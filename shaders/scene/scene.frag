@@ -11,5 +11,5 @@ uniform float surfaceWeight;  // 1 − reflectivity for mirrors whose reflection
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  outColor = vec4(surfaceWeight * shadeSurface(worldPosition, worldNormal, surfaceUv, eyePosition), 1.0);
+  outColor = vec4(surfaceWeight * shadeSurface(worldPosition, worldNormal, surfaceUv, dFdx(surfaceUv), dFdy(surfaceUv), eyePosition), 1.0);
 }

@@ -18,6 +18,8 @@ uniform mat3 normalToWorld;
 uniform mat4 worldToClip;     // the virtual objects' projection (far plane pushed out)
 uniform float minDistance;    // object space: nearer hits are the surface the ray starts on
 uniform float reflectivity;  // the mirror's
+uniform vec3 viewForward;    // the eye's view axis (world, unit)
+uniform float pixelAngle;    // radians one pixel spans on the view axis: the ray cone's spread
 
 layout(std430, binding = 6) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
@@ -50,12 +52,18 @@ void main() {
   vec3 weights = vec3(1.0 - barycentric.x - barycentric.y, barycentric);
   vec3 position = weights.x * attribute3(i0, 0u) + weights.y * attribute3(i1, 0u) + weights.z * attribute3(i2, 0u);
   vec3 hitNormal = weights.x * attribute3(i0, 3u) + weights.y * attribute3(i1, 3u) + weights.z * attribute3(i2, 3u);
-  vec2 uv = weights.x * vec2(meshVertex[8u * i0 + 6u], meshVertex[8u * i0 + 7u]) +
-            weights.y * vec2(meshVertex[8u * i1 + 6u], meshVertex[8u * i1 + 7u]) +
-            weights.z * vec2(meshVertex[8u * i2 + 6u], meshVertex[8u * i2 + 7u]);
+  vec2 uv0 = vec2(meshVertex[8u * i0 + 6u], meshVertex[8u * i0 + 7u]);
+  vec2 uv1 = vec2(meshVertex[8u * i1 + 6u], meshVertex[8u * i1 + 7u]);
+  vec2 uv2 = vec2(meshVertex[8u * i2 + 6u], meshVertex[8u * i2 + 7u]);
+  vec2 uv = weights.x * uv0 + weights.y * uv1 + weights.z * uv2;
   vec3 hit = (objectToWorld * vec4(position, 1.0)).xyz;
   // On the eye's ray through the mirror point, a whole path length away, like a virtual vertex.
   float path = length(surface - eyePosition) + length(hit - surface);
   gl_FragDepth = clipDepth(worldToClip, eyePosition + path * incoming);
-  outColor = vec4(reflectivity * shadeSurface(hit, normalToWorld * hitNormal, uv, surface), 1.0);
+  // The texture's footprint from the ray cone (a traced pixel has no screen derivatives).
+  mat3 toWorld = mat3(objectToWorld);
+  vec3 p0 = toWorld * attribute3(i0, 0u), p1 = toWorld * attribute3(i1, 0u), p2 = toWorld * attribute3(i2, 0u);
+  float cosine = dot(reflected, normalize(cross(p1 - p0, p2 - p0)));
+  float footprint = pixelFootprint(path, dot(incoming, viewForward), pixelAngle, cosine) * uvPerMetre(p0, p1, p2, uv0, uv1, uv2);
+  outColor = vec4(reflectivity * shadeSurfaceOver(hit, normalToWorld * hitNormal, uv, footprint, surface), 1.0);
 }

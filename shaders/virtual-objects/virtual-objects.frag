@@ -26,6 +26,8 @@ uniform mat4 worldToClip;    // the virtual objects' projection (far plane pushe
 // 1: the papers' rendering, each fragment shaded where the virtual triangle puts it (Ofek & Rappoport's
 // explosion map draws so), only kept to the part's own pixels; 0: the exact hit below.
 uniform int drawAsPlaced;
+uniform vec3 viewForward;    // the eye's view axis (world, unit)
+uniform float pixelAngle;    // radians one pixel spans on the view axis: the ray cone's spread
 
 // A hit this share of the triangle's shortest edge outside it still counts: float rounding on the
 // edge two triangles share must not leave a pixel to neither.
@@ -40,17 +42,27 @@ void main() {
   vec3 pointDx = dFdx(point), pointDy = dFdy(point);
   vec3 normalDx = dFdx(inFragment.worldNormal), normalDy = dFdy(inFragment.worldNormal);
   vec2 uvDx = dFdx(inFragment.surfaceUv), uvDy = dFdy(inFragment.surfaceUv);
+  // The object triangle's uv per metre: both are affine over it, so the ratio of their screen area
+  // elements is exact, however the virtual triangle distorts them. Its texture footprint comes from
+  // the reflected ray's cone, as for ray-cast pixels and the reference, not from these derivatives
+  // (a virtual triangle's screen size says little of its object's reflected size).
+  float areaScale = length(cross(pointDx, pointDy));
+  float uvScale = areaScale > 0.0 ? sqrt(abs(uvDx.x * uvDy.y - uvDx.y * uvDy.x) / areaScale) : 0.0;
+  vec3 objectNormal = normalize(cross(inFragment.corner[1] - inFragment.corner[0], inFragment.corner[2] - inFragment.corner[0]));
 
   vec3 surface, surfaceNormal;
   // Off this part of the mirror (or its surface): not this part's pixel.
   if (!gbufferAtPixel(gbufferPosition, gbufferNormal, layer, gl_FragCoord.xy, surface, surfaceNormal)) discard;
-  if (drawAsPlaced != 0) {
-    gl_FragDepth = gl_FragCoord.z;
-    outColor = vec4(reflectivity * shadeSurface(point, normalize(inFragment.worldNormal), inFragment.surfaceUv, surface), 1.0);
-    return;
-  }
   vec3 incoming = normalize(surface - eyePosition);
   vec3 reflected = reflect(incoming, surfaceNormal);
+  float eyeDepthPerLength = dot(incoming, viewForward), eyeDistance = length(surface - eyePosition);
+  if (drawAsPlaced != 0) {
+    gl_FragDepth = gl_FragCoord.z;
+    vec3 toPoint = point - surface;
+    float footprint = pixelFootprint(eyeDistance + length(toPoint), eyeDepthPerLength, pixelAngle, dot(normalize(toPoint), objectNormal));
+    outColor = vec4(reflectivity * shadeSurfaceOver(point, normalize(inFragment.worldNormal), inFragment.surfaceUv, footprint * uvScale, surface), 1.0);
+    return;
+  }
 
   vec3 a = inFragment.corner[0], edge1 = inFragment.corner[1] - a, edge2 = inFragment.corner[2] - a;
   vec3 plane = cross(edge1, edge2);
@@ -77,5 +89,6 @@ void main() {
   vec2 screenStep = abs(determinant(gram)) > 1e-30 ? inverse(gram) * vec2(dot(step, pointDx), dot(step, pointDy)) : vec2(0.0);
   vec3 normal = inFragment.worldNormal + screenStep.x * normalDx + screenStep.y * normalDy;
   vec2 uv = inFragment.surfaceUv + screenStep.x * uvDx + screenStep.y * uvDy;
-  outColor = vec4(reflectivity * shadeSurface(hit, normal, uv, surface), 1.0);
+  float footprint = pixelFootprint(eyeDistance + distance, eyeDepthPerLength, pixelAngle, dot(reflected, objectNormal));
+  outColor = vec4(reflectivity * shadeSurfaceOver(hit, normal, uv, footprint * uvScale, surface), 1.0);
 }

@@ -163,6 +163,9 @@ try {
   const first = await stillFrame((f) => f.sceneTimeMs === timeMs && Math.abs(f.camera.eye.x - 2.5) < 1e-3);
   const canvasSize = await evaluate("[document.getElementById('frame').width, document.getElementById('frame').height]");
   check('the frame fills the canvas one to one', first.width === canvasSize[0] && first.height === canvasSize[1], `${first.width}x${first.height} vs ${canvasSize}`);
+  check('the paused view is anti-aliased (its still frame ran the passes at 4 sample points)',
+    (first.stages || []).some((s) => s.name === 'anti-aliasing') && await evaluate("document.getElementById('stillSamples').value") === '4',
+    JSON.stringify(first.stages));
   const overlay = await evaluate("document.getElementById('overlay').textContent");
   check('the overlay shows fps, latency, server timings and search statistics',
     /fps/.test(overlay) && /input → frame/.test(overlay) && /render [\d.]+ ms/.test(overlay) && /search: 1 mirrors/.test(overlay) && /plan: 1 mirror parts \([01] ray-cast, 0 own colour, 0 environment map, 0 facing away\) · drew 1 objects/.test(overlay) && /\d+ uncovered px ray-cast/.test(overlay), overlay);

@@ -12,8 +12,14 @@ check "the PNG has a PNG signature" is_png "$work/f.png"
 check "render writes a JPEG" "$specula" render --scene checker-sphere --size 160x120 --out "$work/f.jpg" --gl osmesa
 check "the JPEG has a JPEG signature" is_jpeg "$work/f.jpg"
 output=$("$specula" render --scene checker-sphere --size 64x48 --time 2 --eye 0,4,6 --target 0,0,0 --out "$work/g.png" 2>&1)
-check "render prints per-stage timings" grep -q "frame 64x48: scene .* ms, readback .* ms, total .* ms" <<<"$output"
+check "render prints per-stage timings, anti-aliased by default" grep -q "frame 64x48, 4 samples a pixel, pass times summed over them: scene .* ms, anti-aliasing .* ms, readback .* ms, total .* ms" <<<"$output"
 check "render logs the GL platform and renderer" grep -q "specula: GL platform egl-surfaceless" <<<"$output"
+output=$("$specula" render --scene checker-sphere --size 64x48 --samples 1 --out "$work/g1.png" 2>&1)
+check "--samples 1 renders each pass once, not anti-aliased" grep -q "frame 64x48: scene .* ms, readback .* ms, total .* ms" <<<"$output"
+output=$("$specula" render --scene checker-sphere --size 64x48 --samples 8 --method raytrace --out "$work/r8.png" 2>&1)
+check "the ray tracer takes the same samples" grep -q "raytrace .* ms (CPU, Embree, 8 rays a pixel)" <<<"$output"
+fails_with "a sample count that has no pattern is refused" "--samples: samples per pixel must be 1, 2, 4, 8 or 16, got 3" render --samples 3
+fails_with "a sample count out of range is refused" "--samples expects an integer in [1, 16]" render --samples 64
 check "every built-in scene renders" bash -c "for s in \$('$specula' scenes | awk '{print \$1}'); do '$specula' render --scene \$s --size 96x72 --out '$work/'\$s.png >/dev/null || exit 1; done"
 
 fails_with "an unknown scene lists the built-ins" "neither a built-in scene (checker-sphere" render --scene no-such-scene

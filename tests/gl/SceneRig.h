@@ -78,13 +78,22 @@ inline MirrorMismatch mismatchAgainst(const reference::ReferenceImage& reference
   return {mismatch->share(), mismatch->inside, {}};
 }
 
-// The frame against the ray tracer's image of `truth` at the same pose (and size).
+// The options that trace what `frame` rasterized: its size and its samples a pixel.
+inline reference::RayTracerOptions tracedLike(const render::RenderedFrame& frame) {
+  reference::RayTracerOptions options;
+  options.width = frame.width;
+  options.height = frame.height;
+  options.samples = frame.samples;
+  return options;
+}
+
+// The frame against the ray tracer's image of `truth` at the same pose (and size and samples).
 inline MirrorMismatch mismatchAgainstRayTracer(const std::shared_ptr<const scene::Scene>& truth, const scene::ScenePose& pose,
                                                const render::RenderedFrame& frame) {
   auto tracer = reference::RayTracer::create(truth);
   EXPECT_TRUE(tracer) << tracer.error();
   if (!tracer) return {};
-  auto reference = (*tracer)->render(pose, {frame.width, frame.height});
+  auto reference = (*tracer)->render(pose, tracedLike(frame));
   EXPECT_TRUE(reference) << reference.error();
   if (!reference) return {};
   MirrorMismatch result = mismatchAgainst(*reference, frame);

@@ -168,7 +168,8 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
 // Every search option `serve --help` lists as a sessions' default reaches a new session.
 TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
   Process server({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine",
-                  "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed", "--extrusions", "search"});
+                  "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed", "--extrusions", "search",
+                  "--still-samples", "16", "--interactive-samples", "2"});
   const std::smatch listening = server.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
   ASSERT_FALSE(listening.empty()) << server.output();
   auto client = greetedClient(static_cast<std::uint16_t>(std::stoi(listening[1])), net::Encoding::Proto, 64, 48);
@@ -184,6 +185,14 @@ TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
   EXPECT_EQ(welcome->settings().explosion_map_size(), 128u);
   EXPECT_EQ(welcome->settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
   EXPECT_EQ(welcome->settings().extrusions(), v1::EXTRUSIONS_SEARCH);
+  EXPECT_EQ(welcome->settings().still_samples(), 16u);
+  EXPECT_EQ(welcome->settings().interactive_samples(), 2u);
+}
+
+TEST(ServeProcess, RefusesASampleCountWithoutAPattern) {
+  Process server({SPECULA_BINARY, "serve", "--port", "0", "--still-samples", "6"});
+  EXPECT_EQ(server.waitExit(30s), 1);
+  EXPECT_NE(server.output().find("--still-samples: samples per pixel must be 1, 2, 4, 8 or 16, got 6"), std::string::npos) << server.output();
 }
 
 TEST(ServeProcess, RefusesANonLoopbackBindWithoutAToken) {

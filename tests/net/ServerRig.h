@@ -46,6 +46,7 @@ class FakeRenderer : public session::FrameRenderer {
       std::fill(out.rgba.begin(), out.rgba.end(), grey);
     }
     out.stageMs = {{"fake", 0.5}};
+    if (job.samples > 1) out.stageMs.emplace_back("anti-aliasing", 0.1);  // as the GL renderer reports it
     out.renderMs = static_cast<double>(options_.delay.count());
     out.search.set_searched(42);
     return out;

@@ -1,6 +1,7 @@
 // The streaming service end to end on loopback: real Beast server, real WebSocket clients, fake renderer.
 #include <turbojpeg.h>
 
+#include <algorithm>
 #include <numeric>
 
 #include "LoadRun.h"
@@ -8,6 +9,10 @@
 
 namespace specula::testing {
 namespace {
+
+bool antiAliased(const v1::Frame& frame) {
+  return std::any_of(frame.stages().begin(), frame.stages().end(), [](const v1::StageTime& stage) { return stage.name() == "anti-aliasing"; });
+}
 
 using net::Encoding;
 
@@ -55,7 +60,11 @@ TEST_P(StreamingServer, HandshakeWelcomesAndSendsAFirstStillFrame) {
   EXPECT_EQ(frame->frame().height(), 60u);
   EXPECT_EQ(frame->frame().number(), 1u);
   EXPECT_EQ(frame->frame().search().searched(), 42u);
-  ASSERT_EQ(frame->frame().stages_size(), 1);
+  EXPECT_TRUE(frame->frame().still());
+  EXPECT_EQ(frame->frame().stages(0).name(), "fake");
+  EXPECT_TRUE(antiAliased(frame->frame())) << "a still frame takes the default 4 samples";
+  EXPECT_EQ(welcome.settings().still_samples(), 4u);
+  EXPECT_EQ(welcome.settings().interactive_samples(), 1u);
   EXPECT_GE(meanGrey(frame->frame()), 0.0) << "the frame carries a decodable JPEG of its stated size";
 }
 
@@ -77,8 +86,34 @@ TEST_P(StreamingServer, CameraUpdateIsAnsweredByAFrameCarryingItsSequence) {
   }
 }
 
+// By default a still frame is anti-aliased (4 samples a pixel) and interactive frames are not: the
+// still after input is rendered again, once, with the samples.
+TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneAntiAliasedStill) {
+  ServerRig rig(defaultRigOptions());
+  auto client = rig.connect(GetParam());
+  ASSERT_TRUE(client);
+  greet(*client);
+  ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
+  receiveUntil(*client, isFrame);
+  ASSERT_TRUE(client->send(cameraMessage({1, 1, 6}, 1)).ok());
+  auto interactive = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
+  ASSERT_TRUE(interactive);
+  EXPECT_FALSE(interactive->frame().still());
+  EXPECT_FALSE(antiAliased(interactive->frame()));
+  const int rendersAfterInteractive = rig.renders.load();
+  auto still = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
+  ASSERT_TRUE(still) << "a still frame follows once input stops";
+  EXPECT_FALSE(still->frame().reencoded()) << "more samples than the interactive frame had: a new render";
+  EXPECT_TRUE(antiAliased(still->frame()));
+  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive + 1);
+  EXPECT_FALSE(receiveUntil(*client, isFrame, 400ms)) << "a still scene sends nothing more";
+  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive + 1) << "a paused, unchanged view is not rendered again";
+}
+
+// With as many samples for stills as for interactive frames, the still is the last render re-encoded.
 TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneFullQualityStill) {
   RigOptions options = defaultRigOptions();
+  options.hub.defaults.stillSamples = options.hub.defaults.interactiveSamples;
   ServerRig rig(options);
   auto client = rig.connect(GetParam());
   ASSERT_TRUE(client);
@@ -153,6 +188,8 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_virtual_pixels(v1::PIXELS_AS_PLACED);
     settings.mutable_settings()->set_extrusions(v1::EXTRUSIONS_SEARCH);
     settings.mutable_settings()->set_error_budget_px(-1.0f);  // 0: only exact decisions
+    settings.mutable_settings()->set_still_samples(8);
+    settings.mutable_settings()->set_interactive_samples(2);
     ASSERT_TRUE(client->send(settings).ok());
     ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
     client->close();
@@ -174,6 +211,8 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
   EXPECT_EQ(welcome.settings().extrusions(), v1::EXTRUSIONS_SEARCH);
   EXPECT_EQ(welcome.settings().error_budget_px(), -1.0f);
+  EXPECT_EQ(welcome.settings().still_samples(), 8u);
+  EXPECT_EQ(welcome.settings().interactive_samples(), 2u);
   EXPECT_NE(welcome.resume_token(), token) << "a token resumes once";
 
   auto third = rig.connect(GetParam());
@@ -275,6 +314,8 @@ TEST(StreamingServerInput, OutOfRangeValuesAreRefusedWithAnErrorAndTheSessionGoe
       R"({"settings":{"errorBudgetPx":99}})",
       R"({"settings":{"errorBudgetPx":-0.5}})",
       R"({"settings":{"resolutionScale":"Infinity"}})",
+      R"({"settings":{"stillSamples":3}})",
+      R"({"settings":{"interactiveSamples":64}})",
       R"({"animation":{"speed":1000}})",
       R"({"animation":{"overrides":[{"object":"no-such-thing"}]}})",
   };

@@ -353,6 +353,55 @@ TEST_F(Importer, GltfSceneKeepsAnOpenChromeMeshInItsColourAndSaysSo) {
   EXPECT_NE(imported->notes[0].find("'shard' has a mirror material but an open mesh"), std::string::npos) << imported->notes[0];
 }
 
+// The textured box: base colour textures from an external PNG, one per sampler the file pairs it with.
+TEST_F(Importer, GltfSceneReadsBaseColourTexturesWithTheirSamplers) {
+  Result<ImportedGltfScene> imported = importGltfScene(kGltfScenes / "textured-box.gltf");
+  ASSERT_TRUE(imported.ok()) << imported.error();
+  const Scene& scene = imported->scene;
+  ASSERT_EQ(scene.textures.size(), 2u) << "crate.png clamped and mirrored: two textures";
+  const SceneObject* crate = objectNamed(scene, "crate");
+  const SceneObject* floor = objectNamed(scene, "floor");
+  ASSERT_TRUE(crate && floor);
+  const Material& crateMaterial = scene.materials[crate->material];
+  ASSERT_TRUE(crateMaterial.texture.has_value());
+  const Texture& crateTexture = scene.textures[*crateMaterial.texture];
+  EXPECT_EQ(crateTexture.wrapU, TextureWrap::ClampToEdge);
+  EXPECT_EQ(crateTexture.levels.front().width, 32);
+  EXPECT_EQ(crateTexture.levels.size(), 6u);
+  EXPECT_NE(crateTexture.name.find("crate.png"), std::string::npos) << crateTexture.name;
+  ASSERT_TRUE(scene.materials[floor->material].texture.has_value());
+  EXPECT_EQ(scene.textures[*scene.materials[floor->material].texture].wrapV, TextureWrap::MirroredRepeat);
+  // Its uv came along: the crate's faces span [0, 1].
+  float high = 0.0f;
+  for (const Vertex& v : scene.meshes[crate->mesh].vertices) high = std::max(high, v.uv.x);
+  EXPECT_FLOAT_EQ(high, 1.0f);
+  EXPECT_TRUE(imported->notes.empty());
+}
+
+TEST_F(Importer, GltfSceneRefusesBrokenTexturesByName) {
+  const auto expectFailure = [&](const json& patch, const std::string& expected, const std::string& image = "") {
+    json document = triangleGltf();
+    document["nodes"] = json::parse(R"([{"mesh": 0}])");
+    document["scenes"] = json::parse(R"([{"nodes": [0]}])");
+    document["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
+    document["meshes"][0]["primitives"][0]["material"] = 0;
+    document.merge_patch(patch);
+    if (!image.empty()) write("picture.png", image);
+    Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
+    ASSERT_FALSE(imported.ok()) << expected;
+    EXPECT_NE(imported.error().find(expected), std::string::npos) << "message: " << imported.error() << "\nlacks: " << expected;
+  };
+  const json picture = json::parse(R"({"images": [{"uri": "picture.png"}], "textures": [{"source": 0}]})");
+  expectFailure(picture, "image 0 (picture.png): not an image this build reads", "words, not pixels");
+  expectFailure(picture, "image 0 (picture.png): the image cannot be decoded", readAll(kGltfScenes / ".." / "scenes" / "bad" / "assets" / "truncated.png"));
+  expectFailure(picture, "image 0 (picture.png): the image is 9000x16 texels", readAll(kGltfScenes / ".." / "scenes" / "bad" / "assets" / "huge.png"));
+  expectFailure(json::parse(R"({"images": [{"uri": "../outside.png"}], "textures": [{"source": 0}]})"), "climbs out of");
+  expectFailure(json::parse(R"({"textures": []})"), "material 0: baseColorTexture refers to texture 0, but the file has 0");
+  json sampler = picture;
+  sampler["textures"][0]["sampler"] = 3;
+  expectFailure(sampler, "refers to sampler 3, but the file has 0", readAll(kGltfScenes / "crate.png"));
+}
+
 TEST_F(Importer, GlbFramingMustHoldTogether) {
   const std::string good = glb(triangleGltf(), kTriangle);
   ASSERT_TRUE(gltf(good).ok());

@@ -1,0 +1,33 @@
+#pragma once
+// The scene's textures on the GPU, uploaded once with the mip levels scene::Texture holds (built in
+// linear light on the CPU, so the reference's sampler filters the same texels), as sRGB8 so the
+// sampler decodes to linear before filtering.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "gl/GlApi.h"
+#include "gl/GlObject.h"
+#include "scene/Scene.h"
+
+namespace specula::gl {
+
+class GpuTextures {
+ public:
+  // The texture unit shading.glsl's materialTexture samples; no pass binds anything else there.
+  static constexpr GLuint kMaterialTextureUnit = 7;
+
+  GpuTextures(const GlApi& gl, const std::vector<scene::Texture>& textures);
+
+  // Binds texture `index` (a 1×1 white one when nullopt, so the sampler is always complete) on
+  // kMaterialTextureUnit; leaves GL_TEXTURE0 active.
+  void bind(std::optional<std::uint32_t> index) const;
+  std::size_t size() const { return textures_.size(); }
+
+ private:
+  const GlApi* gl_;
+  std::vector<GlTexture> textures_;
+  GlTexture white_;
+};
+
+}  // namespace specula::gl

@@ -17,6 +17,7 @@
 #include "bench/AccuracyBenchmark.h"
 #include "bench/BenchReport.h"
 #include "bench/SceneBenchmark.h"
+#include "math/SamplePattern.h"
 #include "scene/builtin/BuiltinScenes.h"
 
 namespace specula::app {
@@ -33,6 +34,7 @@ CommandLine benchOptions() {
       {"frames", "N", "warm frames measured after the cold one", "60"},
       {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
       {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
+      samplesOption(math::kStillFrameSamples, "samples a pixel of the still frame compared with the ray tracer (which takes the same): 1, 2, 4, 8 or 16"),
       {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
@@ -41,14 +43,16 @@ CommandLine benchOptions() {
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
-      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] "
+      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] [--samples N] "
       "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
       "frame-to-frame coherence and from a cold start, reflection-point error in pixels against the exact\n"
-      "solvers (scenes with an analytic sphere or extrusion mirror, where it searches), and the last frame against\n"
-      "the ray-traced reference (PSNR, SSIM, share of mismatched mirror pixels, ray-tracing time). \"floor\" is\n"
+      "solvers (scenes with an analytic sphere or extrusion mirror, where it searches), and the last pose as an\n"
+      "anti-aliased still frame (--samples) against the ray-traced reference at the same samples (PSNR, SSIM, share\n"
+      "of mismatched mirror pixels); \"trace ms\" and \"x trace\" set the warm frames (one sample) against one ray\n"
+      "a pixel. \"still frames\" times the last pose at 1, 4 and 8 samples: what anti-aliasing costs. \"floor\" is\n"
       "the last pose drawn with no reflection (--method none): the scene's own raster, below which no method\n"
       "can go. --plan everything turns the frame planner off (no culling, no ray-cast mirrors) for comparison.\n"
       "\"searches\" renders the first frames again with each search (crosshair, hierarchy, explosion-map\n"
@@ -280,6 +284,9 @@ int runBench(std::span<const std::string> arguments) {
     std::tie(settings.coldWidth, settings.coldHeight) = *coldSize;
   }
   settings.reference = !options.has("no-reference");
+  auto samples = parseSamples(options);
+  if (!samples) return fail(samples.error());
+  settings.stillSamples = *samples;
   if (Status status = parsePlanOptions(options, settings.reflection); !status) return fail(status.error());
   if (Status status = parseSearchOptions(options, settings.reflection); !status) return fail(status.error());
   std::vector<std::string> builtins;

@@ -84,6 +84,10 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
     f.push_back({name + "_steps_mean", has ? number(measured->steps.mean, 2) : ""});
     f.push_back({name + "_steps_max", has ? std::to_string(measured->steps.maximum) : ""});
   }
+  for (const int samples : SceneBenchResult::kStillSampleCounts) {
+    const auto row = std::find_if(r.stillFrames.begin(), r.stillFrames.end(), [&](const auto& s) { return s.samples == samples; });
+    f.push_back({"still_ms_" + std::to_string(samples) + "_samples", row != r.stillFrames.end() ? number(row->milliseconds, 1) : ""});
+  }
   const auto& e = r.pointError;
   f.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
   f.push_back({"point_error_mean_px", e ? significant(e->mean) : ""});
@@ -105,6 +109,8 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"psnr_db", c ? number(c->psnr, 2) : ""});
   f.push_back({"ssim", c ? number(c->ssim, 4) : ""});
   f.push_back({"mirror_mismatch", c ? number(c->mirrorMismatch, 4) : ""});
+  f.push_back({"image_samples", c ? std::to_string(c->samples) : ""});
+  f.push_back({"raytrace_still_ms", c ? number(c->stillRayTraceMilliseconds, 1) : ""});
   f.push_back({"raytrace_ms", c ? number(c->rayTraceMilliseconds, 1) : ""});
   f.push_back({"frame_vs_raytrace", optionalNumber(r.timeVersusRayTrace(), 3)});
   return f;
@@ -368,6 +374,13 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
              std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
              " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
              std::to_string(r.castTiles.possible) + " object tiles\n";
+    if (!r.stillFrames.empty()) {
+      std::string still = "  still frames (last pose, samples a pixel: ms):";
+      for (const SceneBenchResult::StillFrame& s : r.stillFrames) still += " " + std::to_string(s.samples) + ": " + number(s.milliseconds, 1) + ";";
+      if (c) still += " images compared at " + std::to_string(c->samples) + " samples, the ray tracer's " + number(c->stillRayTraceMilliseconds, 0) + " ms;";
+      still.back() = '\n';
+      table += still;
+    }
     if (!r.patchTessellation.empty()) {
       std::string patches = "  patch tessellation (last pose, camera distance ×):";
       for (const SceneBenchResult::PatchTessellation& t : r.patchTessellation)

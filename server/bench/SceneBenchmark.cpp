@@ -50,16 +50,44 @@ std::vector<render::StageTiming> stageMedians(const std::vector<render::FrameTim
   return medians;
 }
 
-Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_ptr<const scene::Scene> scene,
-                                                                   const scene::ScenePose& pose,
-                                                                   const render::RenderedFrame& frame) {
+// `pose` as a still frame (BenchOptions::stillSamples) against the ray tracer at the same samples,
+// and the ray tracer's time at one ray a pixel, what the warm frames' time is set against.
+Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_ptr<const scene::Scene> scene, render::Renderer& renderer,
+                                                                   const scene::ScenePose& pose, const BenchOptions& options) {
+  auto still = renderer.render(pose, options.width, options.height, options.reflection, options.stillSamples);
+  if (!still) return Error{still.error()};
   auto tracer = reference::RayTracer::create(std::move(scene));
   if (!tracer) return Error{tracer.error()};
-  auto truth = (*tracer)->render(pose, {frame.width, frame.height, 1, 0});
+  reference::RayTracerOptions traced;
+  traced.width = options.width;
+  traced.height = options.height;
+  auto single = (*tracer)->render(pose, traced);
+  if (!single) return Error{single.error()};
+  traced.samples = options.stillSamples;
+  auto truth = options.stillSamples == 1 ? std::move(single) : (*tracer)->render(pose, traced);
   if (!truth) return Error{truth.error()};
-  auto comparison = bench::compareWithReference(frame, *truth);
+  auto comparison = bench::compareWithReference(*still, *truth);
   if (!comparison) return Error{comparison.error()};
-  return SceneBenchResult::ReferenceComparison{comparison->psnr, comparison->ssim, comparison->mirrorMismatch, truth->milliseconds};
+  return SceneBenchResult::ReferenceComparison{comparison->psnr, comparison->ssim, comparison->mirrorMismatch, options.stillSamples,
+                                               options.stillSamples == 1 ? truth->milliseconds : single->milliseconds,
+                                               truth->milliseconds};
+}
+
+// The last pose as a still frame at each of kStillSampleCounts, median over a few frames.
+Result<std::vector<SceneBenchResult::StillFrame>> stillFrames(render::Renderer& renderer, const scene::ScenePose& pose,
+                                                               const BenchOptions& options) {
+  constexpr int kStillFrames = 3;
+  std::vector<SceneBenchResult::StillFrame> rows;
+  for (const int samples : SceneBenchResult::kStillSampleCounts) {
+    std::vector<double> totals;
+    for (int frame = 0; frame < kStillFrames; ++frame) {
+      auto rendered = renderer.render(pose, options.width, options.height, options.reflection, samples);
+      if (!rendered) return Error{rendered.error()};
+      totals.push_back(rendered->timings.totalMilliseconds);
+    }
+    rows.push_back({samples, median(std::move(totals))});
+  }
+  return rows;
 }
 
 // Frames each search strategy is timed on, after the cold one.
@@ -212,7 +240,16 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
                                                      pointErrors.exactHiddenButSearchVisible};
   }
 
+  // Right after the warm frames, so the still frame's searches start where the animation left them.
+  if (options.reference) {
+    auto comparison = compareWithRayTracer(scene, r, pose, options);
+    if (!comparison) return Error{"ray-traced reference for " + scene->name + ": " + comparison.error()};
+    result.reference = *comparison;
+  }
   result.rasterFloorMilliseconds = rasterFloor(r, pose, options);
+  auto still = stillFrames(r, pose, options);
+  if (!still) return Error{still.error()};
+  result.stillFrames = std::move(*still);
   auto tessellation = patchTessellation(r, pose, options);
   if (!tessellation) return Error{tessellation.error()};
   result.patchTessellation = std::move(*tessellation);
@@ -220,11 +257,6 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   if (!searches) return Error{searches.error()};
   result.searches = std::move(*searches);
 
-  if (options.reference) {
-    auto comparison = compareWithRayTracer(scene, pose, last);
-    if (!comparison) return Error{"ray-traced reference for " + scene->name + ": " + comparison.error()};
-    result.reference = *comparison;
-  }
 
   if (options.coldWidth > 0 && options.coldHeight > 0) {
     passes::ReflectionSettings coldStart = settings;

@@ -9,6 +9,7 @@
 
 #include "base/Result.h"
 #include "gl/GlContext.h"
+#include "math/SamplePattern.h"
 #include "passes/FramePlan.h"
 #include "passes/ReflectionSettings.h"
 #include "render/FrameTimings.h"
@@ -22,6 +23,7 @@ struct BenchOptions {
   double framesPerSecond = 60.0;   // animation time between frames: 1 / framesPerSecond
   int coldWidth = 1280, coldHeight = 720;  // the extra cold-start frame (0 skips it)
   bool reference = true;           // compare with the ray tracer (CPU; the slowest part)
+  int stillSamples = math::kStillFrameSamples;  // the image comparison's anti-aliasing, both sides
   passes::ReflectionSettings reflection;  // defaults but for the plan options (the planner off, for comparison)
 };
 
@@ -78,9 +80,20 @@ struct SceneBenchResult {
   struct ReferenceComparison {
     double psnr = 0.0, ssim = 0.0;  // PSNR in dB, at most 100 (identical images)
     double mirrorMismatch = 0.0;  // share of mirror pixels that differ strongly
-    double rayTraceMilliseconds = 0.0;
+    int samples = 1;              // the images compared took this many samples a pixel (BenchOptions::stillSamples)
+    double rayTraceMilliseconds = 0.0;       // one ray a pixel, as the warm frames' one sample
+    double stillRayTraceMilliseconds = 0.0;  // `samples` rays a pixel, the image compared
   };
   std::optional<ReferenceComparison> reference;
+
+  // The cost of anti-aliasing: the last pose rendered as a still frame at each of these samples a
+  // pixel (the passes run once per sample point), median wall time of a few frames.
+  static constexpr int kStillSampleCounts[] = {1, 4, 8};
+  struct StillFrame {
+    int samples = 1;
+    double milliseconds = 0.0;
+  };
+  std::vector<StillFrame> stillFrames;
 
   // The parametric meshes' screen-space tessellation at the last pose with the camera moved to
   // kPatchDistanceFactors times its distance from its target: triangles generated, and the area in

@@ -27,7 +27,8 @@ bench::SceneBenchResult measured(const std::string& name) {
   r.warmSteps = {1.5, 4, 100};
   r.coldSteps = {16.0, 22, 100};
   r.pointError = bench::SceneBenchResult::PointError{10, 0.01, 0.5, 1.25, 1, 0};
-  r.reference = bench::SceneBenchResult::ReferenceComparison{20.5, 0.95, 0.1, 44.0};
+  r.reference = bench::SceneBenchResult::ReferenceComparison{20.5, 0.95, 0.1, 4, 44.0, 170.0};
+  r.stillFrames = {{1, 21.0}, {4, 80.5}, {8, 161.0}};
   return r;
 }
 
@@ -55,7 +56,7 @@ TEST(BenchReport, CsvHasOneColumnSetAndEmptyCellsWhereNothingWasMeasured) {
   EXPECT_NE(rows[0].find(",fps,raster_floor_ms,"), std::string::npos);
   EXPECT_NE(rows[1].find(",50.0,7.25,"), std::string::npos) << "fps = 1000 / 20 ms, then the floor: " << rows[1];
   EXPECT_NE(rows[1].find(",0.5,1.25,"), std::string::npos) << rows[1];
-  EXPECT_EQ(rows[2].substr(rows[2].size() - 5), ",,,,,") << "no reference: five empty cells at the end";
+  EXPECT_EQ(rows[2].substr(rows[2].size() - 7), ",,,,,,,") << "no reference: seven empty cells at the end";
 }
 
 TEST(BenchReport, FrameTimeIsAlsoGivenAsAMultipleOfTheRayTracers) {
@@ -70,6 +71,20 @@ TEST(BenchReport, FrameTimeIsAlsoGivenAsAMultipleOfTheRayTracers) {
   EXPECT_NE(table[0].find(" floor "), std::string::npos) << table[0];
   EXPECT_NE(table[1].find(" 7.2 "), std::string::npos) << "the raster floor: " << table[1];
   EXPECT_NE(table[1].find(" 0.45"), std::string::npos) << table[1];
+}
+
+TEST(BenchReport, StillFramesShowWhatAntiAliasingCosts) {
+  const std::vector<bench::SceneBenchResult> results = {measured("sphere")};
+  const auto csv = lines(bench::formatCsv(results));
+  EXPECT_NE(csv[0].find(",still_ms_1_samples,still_ms_4_samples,still_ms_8_samples,"), std::string::npos) << csv[0];
+  EXPECT_NE(csv[1].find(",21.0,80.5,161.0,"), std::string::npos) << csv[1];
+  EXPECT_NE(csv[0].find(",image_samples,raytrace_still_ms,raytrace_ms,"), std::string::npos) << csv[0];
+  EXPECT_NE(csv[1].find(",4,170.0,44.0,"), std::string::npos) << csv[1];
+  const std::string table = bench::formatTable(results);
+  EXPECT_NE(table.find("still frames (last pose, samples a pixel: ms): 1: 21.0; 4: 80.5; 8: 161.0; images compared at 4 samples, "
+                       "the ray tracer's 170 ms\n"),
+            std::string::npos)
+      << table;
 }
 
 TEST(BenchReport, JsonWritesNullForMissingValuesAndEscapesNames) {

@@ -377,7 +377,7 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
     if (!r.stillFrames.empty()) {
       std::string still = "  still frames (last pose, samples a pixel: ms):";
       for (const SceneBenchResult::StillFrame& s : r.stillFrames) still += " " + std::to_string(s.samples) + ": " + number(s.milliseconds, 1) + ";";
-      if (c) still += " images compared at " + std::to_string(c->samples) + " samples, the ray tracer's " + number(c->stillRayTraceMilliseconds, 0) + " ms;";
+      if (c) still += " images compared at " + std::to_string(c->samples) + " samples with a " + std::to_string(c->samples) + "-ray trace (" + number(c->stillRayTraceMilliseconds, 0) + " ms);";
       still.back() = '\n';
       table += still;
     }

@@ -560,7 +560,7 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
   const std::size_t chosen = choice.scene ? *choice.scene : model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene) : 0;
   if (chosen >= model.scenes.size())
     return Error{"there is no scene " + std::to_string(chosen) + " (the file has " + std::to_string(model.scenes.size()) +
-                 "; pick one with --gltf-scene 0.." + std::to_string(model.scenes.size() - 1) + ")"};
+                 "; pick one of 0.." + std::to_string(model.scenes.size() - 1) + " with --gltf-scene, or \"scene\" in an include)"};
 
   // Base colour textures: glTF textures pair an image with a sampler; one scene texture per pair used.
   std::map<std::tuple<int, TextureWrap, TextureWrap>, std::uint32_t> textures;

@@ -9,15 +9,16 @@ constexpr std::size_t kNamesListed = 20;
 
 NameIndex::NameIndex(std::string kind) : kind_(std::move(kind)) {}
 
-std::string NameIndex::add(const JsonNode& name) {
-  const std::string& text = name.string();
+std::string NameIndex::add(const JsonNode& name) { return add(name.string(), name); }
+
+std::string NameIndex::add(std::string text, const JsonNode& name) {
   if (text.empty() || text.size() > kMaxNameLength)
     name.fail(kind_ + " names must have 1 to " + std::to_string(kMaxNameLength) + " characters");
   const auto [it, added] = indices_.emplace(text, static_cast<std::uint32_t>(names_.size()));
   if (!added)
     name.fail("duplicate " + kind_ + " name " + JsonNode::quoted(text) + " (first declared at " + paths_[it->second] +
               ")");
-  names_.push_back(text);
+  names_.push_back(std::move(text));
   paths_.push_back(name.path());
   return names_.back();
 }

@@ -17,6 +17,8 @@ class NameIndex {
   // Registers the string at `name` as the next index and returns it; fails on an empty or overlong
   // name and on one already registered.
   std::string add(const JsonNode& name);
+  // Registers `text`, a name made from the file (an included object's), failing at `where`.
+  std::string add(std::string text, const JsonNode& where);
 
   // The index of the entity the string at `reference` names; fails listing the known names otherwise.
   std::uint32_t find(const JsonNode& reference) const;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
+#include <iterator>
 #include <map>
 #include <optional>
 
@@ -32,6 +33,7 @@ constexpr std::size_t kMaxEntities = 10000;  // meshes, materials, objects, anim
 constexpr std::size_t kMaxKeys = 100000;  // keyframes per path
 constexpr std::size_t kMaxProfilePoints = 1024;
 constexpr std::int64_t kMaxSegments = 1024;  // grid cells per side, slices, stacks, torus segments
+constexpr std::size_t kMaxIncludes = 64;     // glTF files included, each read whole
 
 // Names of everything a scene file refers to by name.
 struct Names {
@@ -417,6 +419,52 @@ SceneObject readObject(const JsonNode& node, Names& names) {
   return object;
 }
 
+// {"name": "engine", "file": "engine.glb", "scene": N, "translation", "rotation", "scale"}: a glTF
+// file's scene (its default, or "scene") as a group placed by the transform. Its objects are named
+// "<name>/<object>", so animations and protocol overrides can move them one by one; its materials
+// and textures come along; its cameras and lights do not (the scene file has its own).
+void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Names& names, TextureFiles& textures) {
+  node.expectObject({"name", "file", "scene", "translation", "rotation", "scale"});
+  const JsonNode nameNode = node.at("name");
+  const std::string& group = nameNode.string();
+  if (group.empty() || group.find('/') != std::string::npos)
+    nameNode.fail("an include's name must be non-empty and without '/' (it prefixes its objects' names: \"" + group + "/...\")");
+  const JsonNode file = node.at("file");
+  Result<fs::path> path = resolveInside(baseDir, file.string());
+  if (!path) file.fail(path.error());
+  std::string extension = path->extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  if (extension != ".gltf" && extension != ".glb") file.fail("an include is a glTF file (.gltf or .glb), got " + JsonNode::quoted(extension));
+  GltfSceneChoice choice;
+  if (const auto index = node.find("scene")) choice.scene = static_cast<std::size_t>(index->integer(0, std::numeric_limits<std::int32_t>::max()));
+  Result<ImportedGltfScene> imported = importGltfScene(*path, choice);
+  if (!imported) file.fail(imported.error());
+  Scene& included = imported->scene;
+  for (const Texture& texture : included.textures)
+    if ((textures.texels += texture.texelCount()) > kMaxTexelsPerScene)
+      file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) + " texels with this file's; use smaller images");
+  const auto meshOffset = static_cast<std::uint32_t>(scene.meshes.size());
+  const auto materialOffset = static_cast<std::uint32_t>(scene.materials.size());
+  const auto textureOffset = static_cast<std::uint32_t>(scene.textures.size());
+  std::move(included.meshes.begin(), included.meshes.end(), std::back_inserter(scene.meshes));
+  std::move(included.textures.begin(), included.textures.end(), std::back_inserter(scene.textures));
+  for (Material& material : included.materials) {
+    if (material.texture) *material.texture += textureOffset;
+    material.name = group + "/" + material.name;
+    scene.materials.push_back(std::move(material));
+  }
+  const math::Transform placement = readTransform(node, math::Transform{});
+  for (SceneObject& object : included.objects) {
+    object.name = names.objects.add(group + "/" + object.name, nameNode);
+    object.mesh += meshOffset;
+    object.material += materialOffset;
+    if (object.mirror && object.mirror->closedTwinMesh) *object.mirror->closedTwinMesh += meshOffset;
+    object.transform = placement;  // the group's meshes are in its world space
+    scene.objects.push_back(std::move(object));
+  }
+}
+
 Light readLight(const JsonNode& node) {
   Light light;
   const JsonNode type = node.at("type");
@@ -500,7 +548,7 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
     version->fail("unsupported scene format version " + std::to_string(number) + "; this build reads version " +
                   std::to_string(kSceneFormatVersion));
   root.expectObject({"specula_scene", "name", "background", "ambient", "camera", "meshes", "materials", "objects",
-                     "lights", "animations"});
+                     "includes", "lights", "animations"});
   Scene scene;
   const std::optional<JsonNode> name = root.find("name");
   scene.name = name ? name->string() : std::move(defaultName);
@@ -511,18 +559,25 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
   scene.camera = readCamera(camera, math::Camera{});
 
   Names names;
+  // A scene of included glTF files alone needs no meshes, materials or objects of its own.
+  const std::optional<JsonNode> includes = root.find("includes");
+  const auto entities = [&](std::string_view key) {
+    const std::optional<JsonNode> list = root.find(key);
+    if (!list && !includes) root.at(key);  // fails: the key is required
+    return list ? list->array(includes ? 0 : 1, kMaxEntities) : std::vector<JsonNode>{};
+  };
   std::size_t meshVertices = 0;
-  for (const JsonNode& node : root.at("meshes").array(1, kMaxEntities)) {
+  for (const JsonNode& node : entities("meshes")) {
     scene.meshes.push_back(readMesh(node, baseDir, names.meshes));
     if ((meshVertices += scene.meshes.back().vertices.size()) > kMaxVerticesPerScene)
       node.fail("meshes hold " + std::to_string(meshVertices) + " vertices so far, more than the scene limit of " +
                 std::to_string(kMaxVerticesPerScene));
   }
   TextureFiles textures;
-  for (const JsonNode& node : root.at("materials").array(1, kMaxEntities))
+  for (const JsonNode& node : entities("materials"))
     scene.materials.push_back(readMaterial(node, names.materials, baseDir, scene, textures));
   std::size_t vertices = 0, triangles = 0;
-  for (const JsonNode& node : root.at("objects").array(1, kMaxEntities)) {
+  for (const JsonNode& node : entities("objects")) {
     scene.objects.push_back(readObject(node, names));
     const Mesh& mesh = scene.meshes[scene.objects.back().mesh];
     if ((vertices += mesh.vertices.size()) > kMaxVerticesPerScene ||
@@ -530,6 +585,13 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
       node.fail("objects so far draw " + std::to_string(vertices) + " vertices and " + std::to_string(triangles) +
                 " triangles, more than the scene limits of " + std::to_string(kMaxVerticesPerScene) + " and " +
                 std::to_string(kMaxTrianglesPerScene));
+  }
+  if (includes) {
+    for (const JsonNode& node : includes->array(1, kMaxIncludes)) readInclude(node, baseDir, scene, names, textures);
+    if (scene.vertexCount() > kMaxVerticesPerScene || scene.triangleCount() > kMaxTrianglesPerScene)
+      includes->fail("with its includes the scene draws " + std::to_string(scene.vertexCount()) + " vertices and " +
+                     std::to_string(scene.triangleCount()) + " triangles, more than the limits of " + std::to_string(kMaxVerticesPerScene) +
+                     " and " + std::to_string(kMaxTrianglesPerScene));
   }
   if (const auto lights = root.find("lights"))
     for (const JsonNode& node : lights->array(0, kMaxLights)) scene.lights.push_back(readLight(node));

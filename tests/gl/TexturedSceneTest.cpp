@@ -81,3 +81,10 @@ TEST(TexturedScene, TheTextureShows) {
   ASSERT_TRUE(frame) << frame.error();
   EXPECT_GT(wholeFrameMismatch(textured, pose, *frame), 0.3) << "most of the frame is textured floor";
 }
+
+// Two textured glTF groups and a chrome one placed by a scene file (one scaled and turned), as the ray tracer sees them.
+TEST(TexturedScene, IncludedGltfGroupsMatchTheRayTracer) {
+  auto loaded = scene::loadSceneFile(kData / "gltf" / "includes.json");
+  ASSERT_TRUE(loaded) << loaded.error();
+  expectLikeTheRayTracer(std::make_shared<const scene::Scene>(std::move(loaded.value())), 0.01, 0.01);
+}

@@ -330,7 +330,7 @@ TEST_F(Importer, GltfSceneRefusesBrokenTreesAndChoicesByName) {
   expectSceneFailure(R"([{"children": [2]}, {"children": [2]}, {"mesh": 0}])", R"([{"nodes": [0, 1]}])", "node 2 is reached twice");
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [3]}])", "scene 0 refers to node 3, but the file has 1");
   expectSceneFailure(R"([{"mesh": 0}])", R"([])", "the file holds no scene");
-  expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no scene 2 (the file has 1; pick one with --gltf-scene 0..0)",
+  expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no scene 2 (the file has 1; pick one of 0..0 with --gltf-scene, or \"scene\" in an include)",
                      GltfSceneChoice{2, std::nullopt});
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no camera 0 (the file has 0)",
                      GltfSceneChoice{std::nullopt, 0});

@@ -334,3 +334,28 @@ TEST(SceneLoader, RejectsNonFiniteNumbersAtLoad) {
 
 }  // namespace
 }  // namespace specula::scene
+
+// A scene file that includes glTF scenes as groups: their objects are named "<group>/<object>" for
+// animations and overrides, placed by the group's transform, with their materials and textures.
+TEST(SceneLoader, IncludedGltfScenesAreGroupsWithNamedObjects) {
+  Result<Scene> scene = loadSceneFile(fs::path(SPECULA_TEST_DATA_DIR) / "gltf" / "includes.json");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  std::vector<std::string> names;
+  for (const SceneObject& object : scene->objects) names.push_back(object.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"ground", "left/crate", "left/floor", "right/crate", "right/floor", "ball/sphere",
+                                             "ball/floor", "ball/red box", "ball/green box"}));
+  const SceneObject& right = scene->objects[3];
+  EXPECT_FLOAT_EQ(right.transform.scale.x, 0.5f);
+  EXPECT_FLOAT_EQ(right.transform.translation.x, 3.0f);
+  EXPECT_TRUE(scene->objects[5].mirror.has_value()) << "the chrome sphere stays a mirror";
+  ASSERT_TRUE(scene->materials[right.material].texture.has_value());
+  EXPECT_LT(*scene->materials[right.material].texture, scene->textures.size());
+  EXPECT_EQ(scene->materials[right.material].name, "right/crate");
+  ASSERT_EQ(scene->animations.size(), 1u);
+  EXPECT_EQ(scene->animations[0].object, std::optional<std::uint32_t>(1u)) << "the spin moves left/crate";
+  ASSERT_EQ(scene->lights.size(), 1u) << "the file's lights, not the included files'";
+  EXPECT_FALSE(sceneProblem(*scene).has_value());
+  // The group moves its objects: left/crate's box is centred 3 m to the left of the included file's.
+  const ScenePose pose = ScenePose::at(*scene, 0.0);
+  EXPECT_FLOAT_EQ(pose.objectToWorld[1][3].x, -3.0f);
+}

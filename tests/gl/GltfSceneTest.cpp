@@ -31,3 +31,19 @@ TEST(GltfScene, ChromeSphereFromAGlbReflectsLikeTheRayTracer) {
     EXPECT_LE(mismatch.share, 0.01);
   }
 }
+
+// A multi-part model as a user opens it: no camera (the view frames it), six chrome parts.
+TEST(GltfScene, MultiPartEngineMatchesTheRayTracer) {
+  auto imported = scene::importGltfScene(std::filesystem::path(SPECULA_TEST_DATA_DIR) / "gltf" / "engine.glb");
+  ASSERT_TRUE(imported) << imported.error();
+  const auto scene = std::make_shared<const scene::Scene>(std::move(imported->scene));
+  specula::testing::Rig rig = specula::testing::makeRig(scene);
+  ASSERT_TRUE(rig.renderer);
+  const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
+  auto frame = rig.renderer->render(pose, 320, 240, {}, 4);
+  ASSERT_TRUE(frame) << frame.error();
+  const auto mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame);
+  std::printf("engine: %zu mirror pixels, mismatch %.3f %%\n", mismatch.mirrorPixels, 100.0 * mismatch.share);
+  EXPECT_GT(mismatch.mirrorPixels, 500u);
+  EXPECT_LE(mismatch.share, 0.01);
+}

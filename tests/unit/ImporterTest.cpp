@@ -402,6 +402,28 @@ TEST_F(Importer, GltfSceneRefusesBrokenTexturesByName) {
   expectFailure(sampler, "refers to sampler 3, but the file has 0", readAll(kGltfScenes / "crate.png"));
 }
 
+// The generated multi-part engine: every mesh node drawn, the deepest at its composed place.
+TEST_F(Importer, GltfSceneDrawsAMultiPartModelWhole) {
+  Result<ImportedGltfScene> imported = importGltfScene(kGltfScenes / "engine.glb");
+  ASSERT_TRUE(imported.ok()) << imported.error();
+  const Scene& scene = imported->scene;
+  EXPECT_EQ(scene.objects.size(), 78u) << "82 nodes, 4 without a mesh (the root, the engine, two lights)";
+  EXPECT_EQ(scene.mirrorCount(), 6u) << "two valve covers, two exhaust headers, the flywheel and the oil cap";
+  EXPECT_EQ(scene.lights.size(), 2u);
+  EXPECT_TRUE(imported->notes.empty());
+  // root > engine (matrix: up 1.2) > block (up 0.3) > left cylinder (-0.45, 0.8, 0) > left head (up 0.47)
+  // > left spark plug (0.2, 0.2, 0) > left plug wire (up 0.08, turned about x): a torus about (-0.25, 3.05, 0).
+  const SceneObject* wire = objectNamed(scene, "left plug wire");
+  ASSERT_NE(wire, nullptr);
+  glm::vec3 low(1e9f), high(-1e9f);
+  for (const Vertex& v : scene.meshes[wire->mesh].vertices) {
+    low = glm::min(low, v.position);
+    high = glm::max(high, v.position);
+  }
+  expectNear(0.5f * (low + high), {-0.25f, 3.05f, 0.0f});
+  EXPECT_NEAR(high.z - low.z, 2.0f * 0.015f, 1e-4f) << "turned about x: the ring stands in the x-y plane";
+}
+
 TEST_F(Importer, GlbFramingMustHoldTogether) {
   const std::string good = glb(triangleGltf(), kTriangle);
   ASSERT_TRUE(gltf(good).ok());

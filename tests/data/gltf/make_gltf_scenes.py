@@ -9,6 +9,11 @@
       box, a camera looking at it.
   textured-box.gltf (+ crate.png): a box whose six faces each show the whole of an external PNG
       (clamped), on a floor tinted by the same image, mirrored-repeat; no camera, no lights.
+  engine.glb: a two-cylinder engine of 29 meshes on 82 nodes up to five deep (TRS and matrices,
+      meshes instanced on several nodes), painted, cast, aluminium, rubber, copper and chrome parts
+      (the chrome valve covers, exhaust headers, flywheel and oil cap become mirrors), two
+      KHR_lights_punctual lights, no camera: the multi-part CAD model a glTF viewer opens, made
+      here because the public one (Khronos' 2CylinderEngine) cannot be fetched on this machine.
 """
 import base64, json, math, struct, zlib
 
@@ -158,6 +163,55 @@ def sphere(radius, rings, segments):
     return positions, normals, indices
 
 
+def cylinder(radius, height, slices, axis=1):
+    """A closed cylinder about the origin along `axis` (0 x, 1 y, 2 z): side with smooth normals,
+    flat caps; fronts outwards."""
+    positions, normals, indices = [], [], []
+    def place(r, y, c):  # radial (r along the first free axis, c the second), height y
+        p = [0.0, 0.0, 0.0]
+        u, v = (axis + 1) % 3, (axis + 2) % 3
+        p[u], p[axis], p[v] = r[0], y, r[1]
+        return p
+    ring = [(math.cos(2 * math.pi * i / slices), math.sin(2 * math.pi * i / slices)) for i in range(slices)]
+    for y in (-height / 2, height / 2):
+        for c, s_ in ring:
+            positions.append(place((radius * c, radius * s_), y, None))
+            normals.append(place((c, s_), 0.0, None))
+    for i in range(slices):
+        j = (i + 1) % slices
+        indices += [i, j, slices + j, i, slices + j, slices + i]
+    for cap, y in ((0, -height / 2), (1, height / 2)):
+        centre = len(positions)
+        n = place((0.0, 0.0), 1.0 if cap else -1.0, None)
+        positions.append(place((0.0, 0.0), y, None))
+        normals.append(n)
+        first = len(positions)
+        for c, s_ in ring:
+            positions.append(place((radius * c, radius * s_), y, None))
+            normals.append(n)
+        for i in range(slices):
+            j = (i + 1) % slices
+            indices += [centre, first + i, first + j] if cap else [centre, first + j, first + i]
+    return positions, normals, indices
+
+
+def torus(major, minor, majors, minors):
+    """A closed torus about the y axis; fronts outwards."""
+    positions, normals, indices = [], [], []
+    for i in range(majors):
+        a = 2 * math.pi * i / majors
+        for j in range(minors):
+            b = 2 * math.pi * j / minors
+            n = [math.cos(b) * math.cos(a), math.sin(b), -math.cos(b) * math.sin(a)]
+            positions.append([(major + minor * math.cos(b)) * math.cos(a), minor * math.sin(b), -(major + minor * math.cos(b)) * math.sin(a)])
+            normals.append(n)
+    at = lambda i, j: (i % majors) * minors + j % minors
+    for i in range(majors):
+        for j in range(minors):
+            indices += [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)]
+    return positions, normals, indices
+
+
 def quad(half):
     return ([[-half, 0, -half], [half, 0, -half], [half, 0, half], [-half, 0, half]],
             [[0, 1, 0]] * 4, [0, 2, 1, 0, 3, 2])
@@ -243,7 +297,111 @@ def textured_box():
         f.write(crate_png())
 
 
+def engine():
+    g = Builder()
+    paint = g.material("engine blue", (0.12, 0.22, 0.42), 0.2, 0.5)
+    iron = g.material("cast iron", (0.18, 0.18, 0.19), 0.5, 0.6)
+    alu = g.material("aluminium", (0.72, 0.73, 0.75), 0.7, 0.35)
+    chrome = g.material("chrome", (0.95, 0.95, 0.95), 1.0, 0.04)
+    rubber = g.material("rubber", (0.03, 0.03, 0.03), 0.0, 0.9)
+    copper = g.material("copper", (0.72, 0.38, 0.2), 0.8, 0.3)
+    red = g.material("ignition red", (0.7, 0.06, 0.04), 0.0, 0.5)
+    white = g.material("porcelain", (0.9, 0.9, 0.86), 0.0, 0.2)
+    m = {}
+    m["block"] = g.mesh("block", *box((0.9, 0.45, 0.45)), paint)
+    m["crankcase"] = g.mesh("crankcase", *box((0.95, 0.3, 0.5)), paint)
+    m["oil pan"] = g.mesh("oil pan", *box((0.85, 0.15, 0.42)), iron)
+    m["barrel"] = g.mesh("barrel", *cylinder(0.3, 0.7, 48), paint)
+    m["head"] = g.mesh("head", *box((0.36, 0.12, 0.36)), alu)
+    m["valve cover"] = g.mesh("valve cover", *box((0.3, 0.08, 0.3)), chrome)
+    m["piston"] = g.mesh("piston", *cylinder(0.2, 0.25, 32), alu)
+    m["piston pin"] = g.mesh("piston pin", *cylinder(0.05, 0.36, 16, axis=2), iron)
+    m["rod"] = g.mesh("rod", *box((0.05, 0.35, 0.04)), iron)
+    m["crank throw"] = g.mesh("crank throw", *box((0.06, 0.18, 0.12)), iron)
+    m["crankshaft"] = g.mesh("crankshaft", *cylinder(0.07, 2.4, 32, axis=0), iron)
+    m["flywheel"] = g.mesh("flywheel", *cylinder(0.55, 0.12, 96, axis=0), chrome)
+    m["ring gear"] = g.mesh("ring gear", *torus(0.56, 0.04, 96, 12), iron)
+    m["pulley"] = g.mesh("pulley", *cylinder(0.22, 0.1, 48, axis=0), alu)
+    m["belt"] = g.mesh("belt", *torus(0.24, 0.03, 64, 10), rubber)
+    m["alternator"] = g.mesh("alternator", *cylinder(0.16, 0.3, 32, axis=0), alu)
+    m["runner"] = g.mesh("intake runner", *cylinder(0.06, 0.5, 24), alu)
+    m["plenum"] = g.mesh("plenum", *box((0.7, 0.1, 0.12)), alu)
+    m["header"] = g.mesh("exhaust header", *cylinder(0.07, 0.6, 32, axis=2), chrome)
+    m["collector"] = g.mesh("exhaust collector", *cylinder(0.1, 1.1, 32, axis=0), iron)
+    m["spark plug"] = g.mesh("spark plug", *cylinder(0.03, 0.16, 16), white)
+    m["plug wire"] = g.mesh("plug wire", *torus(0.12, 0.015, 32, 8), red)
+    m["bolt"] = g.mesh("bolt head", *cylinder(0.035, 0.03, 6), iron)
+    m["stud"] = g.mesh("stud", *cylinder(0.015, 0.12, 8), copper)
+    m["bracket"] = g.mesh("mount bracket", *box((0.1, 0.2, 0.25)), iron)
+    m["mount"] = g.mesh("rubber mount", *cylinder(0.09, 0.12, 24), rubber)
+    m["oil cap"] = g.mesh("oil cap", *sphere(0.09, 16, 32), chrome)
+    m["dipstick"] = g.mesh("dipstick", *cylinder(0.015, 0.6, 8), copper)
+    m["base"] = g.mesh("base plate", *box((1.6, 0.05, 0.9)), iron)
+    assert len(g.doc["meshes"]) == 29
+    N = lambda **fields: g.node(**fields)
+    bolts = lambda points: [N(name="bolt", mesh=m["bolt"], translation=p) for p in points]
+    # Each cylinder: barrel > head > valve cover, bolts, plug > wire; piston > pin, rod; header; runner.
+    def cylinder_bank(side, x):
+        cover = N(name=side + " valve cover", mesh=m["valve cover"], translation=[0, 0.18, 0])
+        plug = N(name=side + " spark plug", mesh=m["spark plug"], translation=[0.2, 0.2, 0],
+                 children=[N(name=side + " plug wire", mesh=m["plug wire"], translation=[0, 0.08, 0],
+                             rotation=[0.7071068, 0, 0, 0.7071068])])
+        head = N(name=side + " head", mesh=m["head"], translation=[0, 0.47, 0],
+                 children=[cover, plug] + bolts([[sx * 0.28, 0.13, sz * 0.28] for sx in (-1, 1) for sz in (-1, 1)]))
+        pin = N(name=side + " piston pin", mesh=m["piston pin"])
+        rod = N(name=side + " rod", mesh=m["rod"], translation=[0, -0.35, 0])
+        piston = N(name=side + " piston", mesh=m["piston"], translation=[0, 0.1, 0], children=[pin, rod])
+        header = N(name=side + " exhaust header", mesh=m["header"], translation=[0, 0.2, 0.55])
+        runner = N(name=side + " intake runner", mesh=m["runner"], translation=[0, 0.35, -0.42], rotation=[0.2588190, 0, 0, 0.9659258])
+        return N(name=side + " cylinder", mesh=m["barrel"], translation=[x, 0.8, 0], children=[head, piston, header, runner])
+    left, right = cylinder_bank("left", -0.45), cylinder_bank("right", 0.45)
+    throws = [N(name=name, mesh=m["crank throw"], translation=[x, 0.1, 0]) for name, x in (("left throw", -0.45), ("right throw", 0.45))]
+    flywheel = N(name="flywheel", mesh=m["flywheel"], translation=[1.25, 0, 0],
+                 children=[N(name="ring gear", mesh=m["ring gear"], rotation=[0, 0, 0.7071068, 0.7071068])])
+    pulley = N(name="pulley", mesh=m["pulley"], translation=[-1.25, 0, 0],
+               children=[N(name="belt", mesh=m["belt"], rotation=[0, 0, 0.7071068, 0.7071068], translation=[0, 0.25, 0])])
+    crank = N(name="crankshaft", mesh=m["crankshaft"], translation=[0, -0.2, 0], children=throws + [flywheel, pulley])
+    alternator = N(name="alternator", mesh=m["alternator"], translation=[-1.1, 0.55, 0.35],
+                   children=bolts([[0.16, 0, 0.12], [0.16, 0, -0.12]]))
+    plenum = N(name="intake plenum", mesh=m["plenum"], translation=[0, 1.35, -0.55],
+               children=[N(name="stud", mesh=m["stud"], translation=[x, 0.12, 0]) for x in (-0.5, 0, 0.5)])
+    collector = N(name="exhaust collector", mesh=m["collector"], translation=[0, 1.0, 0.75])
+    block = N(name="block", mesh=m["block"], translation=[0, 0.3, 0],
+              children=[left, right, alternator, plenum, collector,
+                        N(name="oil cap", mesh=m["oil cap"], translation=[0.6, 0.5, -0.2]),
+                        N(name="dipstick", mesh=m["dipstick"], translation=[-0.7, 0.4, 0.35])]
+              + bolts([[x, 0.46, z] for x in (-0.8, -0.1, 0.1, 0.8) for z in (-0.38, 0.38)]))
+    crankcase = N(name="crankcase", mesh=m["crankcase"], translation=[0, -0.45, 0],
+                  children=[crank, N(name="oil pan", mesh=m["oil pan"], translation=[0, -0.42, 0])]
+                  + bolts([[x, -0.3, z] for x in (-0.85, 0, 0.85) for z in (-0.5, 0.5)]))
+    mounts = [N(name="mount " + str(i), mesh=m["bracket"], translation=[sx * 1.05, -0.45, sz * 0.25],
+                children=[N(name="rubber mount " + str(i), mesh=m["mount"], translation=[0, -0.25, 0])])
+              for i, (sx, sz) in enumerate(((-1, -1), (-1, 1), (1, -1), (1, 1)))]
+    # The engine stands on its base plate; a matrix places it (scale 1, lifted 1.2).
+    engine_node = N(name="engine", matrix=[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1.2, 0, 1], children=[block, crankcase] + mounts)
+    base = N(name="base plate", mesh=m["base"], translation=[0, 0.05, 0])
+    root = N(name="2-cylinder engine", children=[base, engine_node])
+    while len(g.doc["nodes"]) < 80:  # bolts along the base plate's rim up to the 82 nodes of the public model
+        g.doc["nodes"][base]["children"] = g.doc["nodes"][base].get("children", []) + [N(name="bolt", mesh=m["bolt"],
+            translation=[-1.5 + 0.15 * len(g.doc["nodes"][base].get("children", [])), 0.065, 0.8])]
+    g.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3.0},
+                                                              {"type": "point", "intensity": 40.0, "color": [1.0, 0.9, 0.8]}]}}
+    sun = N(name="sun", rotation=[-0.4, 0.3, 0, 0.866], extensions={"KHR_lights_punctual": {"light": 0}})
+    lamp = N(name="lamp", translation=[2.5, 4.0, 3.0], extensions={"KHR_lights_punctual": {"light": 1}})
+    g.doc["scenes"] = [{"name": "engine", "nodes": [root, sun, lamp]}]
+    assert len(g.doc["nodes"]) == 82, len(g.doc["nodes"])
+    g.finish()
+    text = json.dumps(g.doc).encode()
+    text += b" " * (-len(text) % 4)
+    length = 12 + 8 + len(text) + 8 + len(g.bin)
+    with open("engine.glb", "wb") as f:
+        f.write(b"glTF" + struct.pack("<II", 2, length) + struct.pack("<I", len(text)) + b"JSON" + text)
+        f.write(struct.pack("<I", len(g.bin)) + b"BIN\0" + g.bin)
+
+
 if __name__ == "__main__":
     node_tree()
     chrome_sphere()
     textured_box()
+    engine()

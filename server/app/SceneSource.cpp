@@ -1,10 +1,9 @@
 #include "app/SceneSource.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
+#include "scene/AssetFiles.h"
 #include "scene/SceneLoader.h"
 #include "scene/builtin/BuiltinScenes.h"
 
@@ -13,12 +12,6 @@ namespace specula::app {
 namespace {
 
 constexpr int kMaxGltfIndex = 1 << 20;
-
-bool isGltfFile(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-  return extension == ".gltf" || extension == ".glb";
-}
 
 }  // namespace
 
@@ -46,7 +39,7 @@ Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrF
     for (std::string_view name : scene::builtinSceneNames()) names += (names.empty() ? "" : ", ") + std::string(name);
     return Error{"scene '" + nameOrFile + "' is neither a built-in scene (" + names + ") nor an existing file"};
   }
-  if (isGltfFile(nameOrFile)) {
+  if (scene::isGltfFile(nameOrFile)) {
     auto imported = scene::importGltfScene(nameOrFile, choice);
     if (!imported) return Error{imported.error()};
     for (const std::string& note : imported->notes) std::fprintf(stderr, "specula: %s: %s\n", nameOrFile.c_str(), note.c_str());

@@ -1,5 +1,7 @@
 #include "scene/AssetFiles.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -7,6 +9,18 @@
 namespace specula::scene {
 
 namespace fs = std::filesystem;
+
+std::string lowercaseExtension(const fs::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  return extension;
+}
+
+bool isGltfFile(const fs::path& file) {
+  const std::string extension = lowercaseExtension(file);
+  return extension == ".gltf" || extension == ".glb";
+}
 
 Result<std::string> readBoundedFile(const fs::path& file, std::size_t maxBytes) {
   const std::string name = file.string();

@@ -21,6 +21,10 @@ Result<std::string> readBoundedFile(const std::filesystem::path& file, std::size
 // and absolute paths, URI schemes, NUL bytes and paths that climb out of `folder` with "..".
 Result<std::filesystem::path> resolveInside(const std::filesystem::path& folder, std::string_view relative);
 
+// The file's extension in lower case (".glb"), and whether it names a glTF file (.gltf or .glb).
+std::string lowercaseExtension(const std::filesystem::path& file);
+bool isGltfFile(const std::filesystem::path& file);
+
 // A third-party library's message (several lines, perhaps echoing raw input bytes) as one line of
 // printable ASCII, safe to log or to put into a JSON reply.
 std::string oneLine(std::string_view text);

@@ -14,6 +14,7 @@
 #include <set>
 #include <tuple>
 
+#include "math/Bounds.h"
 #include "math/Transform.h"
 #include "scene/AssetFiles.h"
 #include "scene/MeshTopology.h"
@@ -535,14 +536,11 @@ std::optional<int> nodeLight(const tinygltf::Node& node) {
 
 // A view of the scene's bounds from the front, above and to the right, the whole box in a 45° frame.
 math::Camera framingCamera(const Scene& scene) {
-  glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
+  math::Bounds bounds;
   for (const SceneObject& object : scene.objects)
-    for (const Vertex& v : scene.meshes[object.mesh].vertices) {
-      low = glm::min(low, v.position);
-      high = glm::max(high, v.position);
-    }
-  const glm::vec3 centre = 0.5f * (low + high);
-  const float radius = std::max(0.5f * glm::length(high - low), 1e-3f);
+    for (const Vertex& v : scene.meshes[object.mesh].vertices) bounds.add(v.position);
+  const glm::vec3 centre = bounds.center();
+  const float radius = std::max(bounds.radius(), 1e-3f);
   math::Camera camera;
   camera.fovYDegrees = 45.0f;
   camera.target = centre;

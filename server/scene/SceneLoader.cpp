@@ -247,10 +247,8 @@ Mesh readMeshSource(const JsonNode& node, const fs::path& baseDir, std::string n
   const JsonNode file = node.at("file");
   Result<fs::path> path = resolveInside(baseDir, file.string());
   if (!path) file.fail(path.error());
-  std::string extension = path->extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
-  const bool gltf = extension == ".gltf" || extension == ".glb";
+  const std::string extension = lowercaseExtension(*path);
+  const bool gltf = isGltfFile(*path);
   if (!gltf && extension != ".obj")
     file.fail("unsupported mesh file type " + JsonNode::quoted(extension) + "; use .obj, .gltf or .glb");
   if (pick && !gltf) pick->fail("an OBJ file holds one mesh; \"mesh\" only picks among a glTF file's meshes");
@@ -432,10 +430,7 @@ void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Na
   const JsonNode file = node.at("file");
   Result<fs::path> path = resolveInside(baseDir, file.string());
   if (!path) file.fail(path.error());
-  std::string extension = path->extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
-  if (extension != ".gltf" && extension != ".glb") file.fail("an include is a glTF file (.gltf or .glb), got " + JsonNode::quoted(extension));
+  if (!isGltfFile(*path)) file.fail("an include is a glTF file (.gltf or .glb), got " + JsonNode::quoted(lowercaseExtension(*path)));
   GltfSceneChoice choice;
   if (const auto index = node.find("scene")) choice.scene = static_cast<std::size_t>(index->integer(0, std::numeric_limits<std::int32_t>::max()));
   Result<ImportedGltfScene> imported = importGltfScene(*path, choice);

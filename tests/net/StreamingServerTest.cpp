@@ -86,28 +86,40 @@ TEST_P(StreamingServer, CameraUpdateIsAnsweredByAFrameCarryingItsSequence) {
   }
 }
 
+// A paused view moved once: the interactive frame that answers the move, the renders up to it, and
+// the still frame that follows once input stops; then nothing more arrives.
+struct MovedOnce {
+  std::optional<v1::ServerMessage> interactive, still;
+  int rendersBeforeStill = 0;
+};
+
+MovedOnce moveOnceAndSettle(ServerRig& rig, client::SpeculaClient& client) {
+  MovedOnce moved;
+  greet(client);
+  EXPECT_TRUE(client.send(animationMessage(v1::AnimationControl::PAUSE)).ok());
+  receiveUntil(client, isFrame);
+  EXPECT_TRUE(client.send(cameraMessage({1, 1, 6}, 1)).ok());
+  moved.interactive = receiveUntil(client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
+  moved.rendersBeforeStill = rig.renders.load();
+  moved.still = receiveUntil(client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
+  EXPECT_FALSE(receiveUntil(client, isFrame, 400ms)) << "a still scene sends nothing more";
+  return moved;
+}
+
 // By default a still frame is anti-aliased (4 samples a pixel) and interactive frames are not: the
 // still after input is rendered again, once, with the samples.
 TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneAntiAliasedStill) {
   ServerRig rig(defaultRigOptions());
   auto client = rig.connect(GetParam());
   ASSERT_TRUE(client);
-  greet(*client);
-  ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
-  receiveUntil(*client, isFrame);
-  ASSERT_TRUE(client->send(cameraMessage({1, 1, 6}, 1)).ok());
-  auto interactive = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
-  ASSERT_TRUE(interactive);
-  EXPECT_FALSE(interactive->frame().still());
-  EXPECT_FALSE(antiAliased(interactive->frame()));
-  const int rendersAfterInteractive = rig.renders.load();
-  auto still = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
-  ASSERT_TRUE(still) << "a still frame follows once input stops";
-  EXPECT_FALSE(still->frame().reencoded()) << "more samples than the interactive frame had: a new render";
-  EXPECT_TRUE(antiAliased(still->frame()));
-  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive + 1);
-  EXPECT_FALSE(receiveUntil(*client, isFrame, 400ms)) << "a still scene sends nothing more";
-  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive + 1) << "a paused, unchanged view is not rendered again";
+  const MovedOnce moved = moveOnceAndSettle(rig, *client);
+  ASSERT_TRUE(moved.interactive);
+  EXPECT_FALSE(moved.interactive->frame().still());
+  EXPECT_FALSE(antiAliased(moved.interactive->frame()));
+  ASSERT_TRUE(moved.still) << "a still frame follows once input stops";
+  EXPECT_FALSE(moved.still->frame().reencoded()) << "more samples than the interactive frame had: a new render";
+  EXPECT_TRUE(antiAliased(moved.still->frame()));
+  EXPECT_EQ(rig.renders.load(), moved.rendersBeforeStill + 1) << "one render for the still; a paused, unchanged view is not rendered again";
 }
 
 // With as many samples for stills as for interactive frames, the still is the last render re-encoded.
@@ -117,26 +129,18 @@ TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneFullQualityStill) {
   ServerRig rig(options);
   auto client = rig.connect(GetParam());
   ASSERT_TRUE(client);
-  greet(*client);
-  ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
-  receiveUntil(*client, isFrame);
-  ASSERT_TRUE(client->send(cameraMessage({1, 1, 6}, 1)).ok());
-  auto interactive = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
-  ASSERT_TRUE(interactive);
-  EXPECT_FALSE(interactive->frame().still());
-  EXPECT_FALSE(interactive->frame().reencoded());
-  const int rendersAfterInteractive = rig.renders.load();
-  auto still = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
-  ASSERT_TRUE(still) << "a still frame follows once input stops";
-  EXPECT_EQ(still->frame().input_sequence(), 1u);
+  const MovedOnce moved = moveOnceAndSettle(rig, *client);
+  ASSERT_TRUE(moved.interactive);
+  EXPECT_FALSE(moved.interactive->frame().still());
+  EXPECT_FALSE(moved.interactive->frame().reencoded());
+  ASSERT_TRUE(moved.still) << "a still frame follows once input stops";
+  EXPECT_EQ(moved.still->frame().input_sequence(), 1u);
   // The view did not change since the interactive frame (paused, same camera and settings): the
   // still is that render encoded again at full quality, not a second render.
-  EXPECT_TRUE(still->frame().reencoded());
-  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive);
-  EXPECT_EQ(still->frame().stages_size(), 0) << "no pass ran for it";
-  EXPECT_NEAR(meanGrey(still->frame()), FakeRenderer::eyeColour({1, 1, 6}), 3.0) << "it shows the interactive frame's view";
-  EXPECT_FALSE(receiveUntil(*client, isFrame, 400ms)) << "a still scene sends nothing more";
-  EXPECT_EQ(rig.renders.load(), rendersAfterInteractive) << "a paused, unchanged view is not rendered again";
+  EXPECT_TRUE(moved.still->frame().reencoded());
+  EXPECT_EQ(rig.renders.load(), moved.rendersBeforeStill) << "no render for the still, and none after it";
+  EXPECT_EQ(moved.still->frame().stages_size(), 0) << "no pass ran for it";
+  EXPECT_NEAR(meanGrey(moved.still->frame()), FakeRenderer::eyeColour({1, 1, 6}), 3.0) << "it shows the interactive frame's view";
 }
 
 TEST_P(StreamingServer, AnimationPlaysPausesAndSeeks) {

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "math/Bounds.h"
 #include "scene/AssetFiles.h"
 #include "scene/GltfImporter.h"
 #include "scene/MeshNormals.h"
@@ -273,14 +274,13 @@ TEST_F(Importer, GltfSceneComposesNodeTransformsDownTheTree) {
     ASSERT_EQ(scene.objects.size(), 2u) << file;
     const SceneObject* cube = objectNamed(scene, "cube");
     ASSERT_NE(cube, nullptr);
-    glm::vec3 low(1e9f), high(-1e9f);
+    math::Bounds bounds;
     for (const Vertex& v : scene.meshes[cube->mesh].vertices) {
-      low = glm::min(low, v.position);
-      high = glm::max(high, v.position);
+      bounds.add(v.position);
       EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
     }
-    expectNear(low, {6, 0, -1});
-    expectNear(high, {8, 2, 1});
+    expectNear(bounds.low, {6, 0, -1});
+    expectNear(bounds.high, {8, 2, 1});
     // A chrome material (metallic 1, roughness 0.05) on a closed mesh is a mirror; the red quad is not.
     ASSERT_TRUE(cube->mirror.has_value());
     EXPECT_TRUE(cube->mirror->closed);
@@ -415,13 +415,10 @@ TEST_F(Importer, GltfSceneDrawsAMultiPartModelWhole) {
   // > left spark plug (0.2, 0.2, 0) > left plug wire (up 0.08, turned about x): a torus about (-0.25, 3.05, 0).
   const SceneObject* wire = objectNamed(scene, "left plug wire");
   ASSERT_NE(wire, nullptr);
-  glm::vec3 low(1e9f), high(-1e9f);
-  for (const Vertex& v : scene.meshes[wire->mesh].vertices) {
-    low = glm::min(low, v.position);
-    high = glm::max(high, v.position);
-  }
-  expectNear(0.5f * (low + high), {-0.25f, 3.05f, 0.0f});
-  EXPECT_NEAR(high.z - low.z, 2.0f * 0.015f, 1e-4f) << "turned about x: the ring stands in the x-y plane";
+  math::Bounds bounds;
+  for (const Vertex& v : scene.meshes[wire->mesh].vertices) bounds.add(v.position);
+  expectNear(bounds.center(), {-0.25f, 3.05f, 0.0f});
+  EXPECT_NEAR(bounds.high.z - bounds.low.z, 2.0f * 0.015f, 1e-4f) << "turned about x: the ring stands in the x-y plane";
 }
 
 TEST_F(Importer, GlbFramingMustHoldTogether) {

@@ -86,6 +86,16 @@ class Builder:
             self.bin += b"\0"
         self.doc["buffers"] = [{"byteLength": len(self.bin)}]
 
+    def write_glb(self, name):
+        """Finishes the buffer and writes the document and it as a GLB container."""
+        self.finish()
+        text = json.dumps(self.doc).encode()
+        text += b" " * (-len(text) % 4)
+        length = 12 + 8 + len(text) + 8 + len(self.bin)
+        with open(name, "wb") as f:
+            f.write(b"glTF" + struct.pack("<II", 2, length) + struct.pack("<I", len(text)) + b"JSON" + text)
+            f.write(struct.pack("<I", len(self.bin)) + b"BIN\0" + self.bin)
+
 
 REPEAT, CLAMP, MIRRORED_REPEAT = 10497, 33071, 33648
 
@@ -270,13 +280,7 @@ def chrome_sphere():
     # Looks from (0, 2.5, 6) down at the sphere: a rotation of -0.25 rad about x.
     nodes.append(g.node(name="camera", camera=0, translation=[0, 2.5, 6], rotation=[-0.1243503, 0, 0, 0.9922385]))
     g.doc["scenes"] = [{"nodes": nodes}]
-    g.finish()
-    text = json.dumps(g.doc).encode()
-    text += b" " * (-len(text) % 4)
-    length = 12 + 8 + len(text) + 8 + len(g.bin)
-    with open("chrome-sphere.glb", "wb") as f:
-        f.write(b"glTF" + struct.pack("<II", 2, length) + struct.pack("<I", len(text)) + b"JSON" + text)
-        f.write(struct.pack("<I", len(g.bin)) + b"BIN\0" + g.bin)
+    g.write_glb("chrome-sphere.glb")
 
 
 def textured_box():
@@ -391,13 +395,7 @@ def engine():
     lamp = N(name="lamp", translation=[2.5, 4.0, 3.0], extensions={"KHR_lights_punctual": {"light": 1}})
     g.doc["scenes"] = [{"name": "engine", "nodes": [root, sun, lamp]}]
     assert len(g.doc["nodes"]) == 82, len(g.doc["nodes"])
-    g.finish()
-    text = json.dumps(g.doc).encode()
-    text += b" " * (-len(text) % 4)
-    length = 12 + 8 + len(text) + 8 + len(g.bin)
-    with open("engine.glb", "wb") as f:
-        f.write(b"glTF" + struct.pack("<II", 2, length) + struct.pack("<I", len(text)) + b"JSON" + text)
-        f.write(struct.pack("<I", len(g.bin)) + b"BIN\0" + g.bin)
+    g.write_glb("engine.glb")
 
 
 if __name__ == "__main__":

@@ -14,12 +14,15 @@
 #include "app/ReflectionOptions.h"
 #include "app/Service.h"
 #include "math/SamplePattern.h"
+#include "scene/AssetFiles.h"
+#include "session/SignedResume.h"
 
 namespace specula::app {
 
 namespace {
 
-constexpr auto kShutdownGrace = std::chrono::milliseconds(900);  // every client closed within 1 s of SIGTERM
+constexpr auto kShutdownGrace = std::chrono::milliseconds(900);  // every client closed within 1 s of SIGTERM (after the drain)
+constexpr std::size_t kMaxSecretFileBytes = 4096;
 
 CommandLine serveOptions() {
   std::vector<OptionSpec> specs = {
@@ -34,6 +37,10 @@ CommandLine serveOptions() {
       {"max-fps", "FPS", "frames per second per session at most", "60"},
       {"still-delay", "MS", "quiet time after input before a full-quality still frame", "150"},
       {"max-size", "WxH", "largest viewport a client may ask for", "3840x2160"},
+      {"resume-secret-file", "FILE", "sign resume tokens with this secret (>= 32 bytes; also SPECULA_RESUME_SECRET): instances sharing it resume each other's sessions", "tokens kept in this process"},
+      {"resume-lifetime", "SECONDS", "how long a resume token stays valid", "600"},
+      {"drain-seconds", "N", "on SIGTERM: answer /readyz 503 and refuse new sessions for N s, then close every session (1001) and exit", "0"},
+      {"public-metrics", "", "serve /metrics without the token (for a scraper inside a private network)", ""},
   };
   for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
   std::vector<OptionSpec> sessionDefaults = tessellationOptions();
@@ -56,14 +63,32 @@ CommandLine serveOptions() {
       "  GET /metrics  Prometheus text: sessions, frames sent and skipped, bytes, render/encode/latency histograms\n"
       "  /ws           WebSocket, subprotocol specula.v1.json (proto3 JSON text) or specula.v1.proto (binary);\n"
       "                messages are defined in proto/specula.proto\n"
+      "  GET /readyz   'ready', or 503 'full' / 'draining': whether a balancer should send new sessions here\n"
       "Each session has its own camera, animation clock and settings and is rendered only when something\n"
-      "changed. SIGTERM or SIGINT closes every client with code 1001 and exits.",
+      "changed. SIGTERM or SIGINT closes every client with code 1001 and exits (after --drain-seconds).",
       std::move(specs));
 }
 
 int fail(const std::string& message) {
   std::cerr << "specula serve: " << message << "\n";
   return 1;
+}
+
+// --resume-secret-file, else SPECULA_RESUME_SECRET, without a trailing newline; empty: neither given.
+Result<std::string> readResumeSecret(const CommandLine& options) {
+  std::string secret;
+  if (options.has("resume-secret-file")) {
+    auto bytes = scene::readBoundedFile(options.text("resume-secret-file"), kMaxSecretFileBytes);
+    if (!bytes) return Error{"--resume-secret-file: " + bytes.error()};
+    secret = std::move(*bytes);
+  } else if (const char* variable = std::getenv("SPECULA_RESUME_SECRET")) {
+    secret = variable;
+  } else {
+    return std::string();
+  }
+  while (!secret.empty() && (secret.back() == '\n' || secret.back() == '\r')) secret.pop_back();
+  if (auto problem = session::SignedResume::secretProblem(secret)) return Error{*problem};
+  return secret;
 }
 
 }  // namespace
@@ -80,6 +105,9 @@ int runServe(std::span<const std::string> arguments) {
   auto maxSize = options.size("max-size", 16384);
   auto tessellation = parseTessellationOptions(options);
   auto stillSamples = parseSamples(options, "still-samples");
+  auto resumeLifetime = options.integer("resume-lifetime", 1, 7 * 24 * 3600);
+  auto drainSeconds = options.integer("drain-seconds", 0, 3600);
+  auto resumeSecret = readResumeSecret(options);
   auto interactiveSamples = parseSamples(options, "interactive-samples");
   passes::ReflectionSettings sessionReflection;  // every session starts with these
   const Status search = parseSearchOptions(options, sessionReflection);
@@ -90,7 +118,9 @@ int runServe(std::span<const std::string> arguments) {
                                maxSize ? Status{} : Error{maxSize.error()},
                                tessellation ? Status{} : Error{tessellation.error()}, search,
                                stillSamples ? Status{} : Error{stillSamples.error()},
-                               interactiveSamples ? Status{} : Error{interactiveSamples.error()}})
+                               interactiveSamples ? Status{} : Error{interactiveSamples.error()},
+                               resumeLifetime ? Status{} : Error{resumeLifetime.error()},
+                               drainSeconds ? Status{} : Error{drainSeconds.error()}, resumeSecret ? Status{} : Error{resumeSecret.error()}})
     if (!status) return fail(status.error());
   if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
@@ -102,6 +132,7 @@ int runServe(std::span<const std::string> arguments) {
                         : std::getenv("SPECULA_TOKEN") ? std::getenv("SPECULA_TOKEN")
                                                        : "";
   serverOptions.webRoot = options.text("web-root");
+  serverOptions.publicMetrics = options.has("public-metrics");
   if (auto problem = net::bindProblem(serverOptions)) return fail(*problem);  // before the slow scene and GL setup
 
   auto gltfChoice = parseGltfSceneOptions(options);
@@ -128,6 +159,8 @@ int runServe(std::span<const std::string> arguments) {
   config.hub.maxFps = *maxFps;
   config.hub.defaults.reflection = sessionReflection;
   config.hub.defaults.reflection.tessellation = *tessellation;
+  config.hub.resumeSecret = *resumeSecret;
+  config.hub.resumeLifetime = std::chrono::seconds(*resumeLifetime);
   config.hub.defaults.stillSamples = *stillSamples;
   config.hub.defaults.interactiveSamples = *interactiveSamples;
   config.hub.scheduler = {*renderThreads, *encodeThreads};
@@ -142,8 +175,17 @@ int runServe(std::span<const std::string> arguments) {
 
   int signal = 0;
   sigwait(&shutdownSignals, &signal);
-  std::fprintf(stderr, "specula serve: %s: closing %zu sessions\n", signal == SIGTERM ? "SIGTERM" : "SIGINT",
-               (*service)->hub().sessionCount());
+  const char* name = signal == SIGTERM ? "SIGTERM" : "SIGINT";
+  if (*drainSeconds > 0) {
+    // Draining: balancers see /readyz fail and send new sessions elsewhere; open ones keep streaming
+    // until their clients are closed below and resume on another instance. A second signal ends it early.
+    (*service)->hub().refuseNewSessions();
+    std::fprintf(stderr, "specula serve: %s: draining for %d s (%zu sessions; a second signal stops at once)\n", name,
+                 *drainSeconds, (*service)->hub().sessionCount());
+    const timespec wait{*drainSeconds, 0};
+    sigtimedwait(&shutdownSignals, nullptr, &wait);
+  }
+  std::fprintf(stderr, "specula serve: %s: closing %zu sessions\n", name, (*service)->hub().sessionCount());
   (*service)->stop(kShutdownGrace);
   return 0;
 }

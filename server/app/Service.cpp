@@ -17,7 +17,8 @@ Result<std::unique_ptr<Service>> Service::start(ServiceConfig config) {
   auto hub = session::SessionHub::start(config.scene, config.hub, rendererFactory);
   if (!hub) return Error{hub.error()};
   service->hub_ = std::move(*hub);
-  config.server.metricsText = [hub = service->hub_.get()] { return hub->metrics().prometheusText(); };
+  config.server.metricsText = [hub = service->hub_.get()] { return hub->prometheusText(); };
+  config.server.notReady = [hub = service->hub_.get()] { return hub->notReady(); };
   auto server = net::HttpServer::start(config.server, *service->hub_);
   if (!server) return Error{server.error()};
   service->server_ = std::move(*server);

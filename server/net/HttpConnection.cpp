@@ -126,6 +126,12 @@ HttpConnection::Response HttpConnection::respond(const http::request<http::empty
   if (request.method() != http::verb::get && request.method() != http::verb::head)
     return answer(http::status::method_not_allowed, "only GET and HEAD are served\n");
   if (path == "/healthz") return answer(http::status::ok, "ok\n");
+  if (path == "/readyz") {  // for balancers: liveness is /healthz, this says whether to send new sessions here
+    const std::optional<std::string> reason = options_.notReady ? options_.notReady() : std::nullopt;
+    return reason ? answer(http::status::service_unavailable, *reason + "\n") : answer(http::status::ok, "ready\n");
+  }
+  if (path == "/metrics" && options_.metricsText && options_.publicMetrics)
+    return answer(http::status::ok, options_.metricsText(), "text/plain; version=0.0.4; charset=utf-8");
   if (!authorized(request, options_.token))
     return answer(http::status::unauthorized,
                   "this server needs its token: add ?token=SECRET to the URL or send 'Authorization: Bearer SECRET'\n");
@@ -141,7 +147,7 @@ HttpConnection::Response HttpConnection::respond(const http::request<http::empty
     return answer(http::status::ok, options_.metricsText(), "text/plain; version=0.0.4; charset=utf-8");
   if (auto file = files_.find(path)) return answer(http::status::ok, std::move(file->body), file->contentType);
   return answer(http::status::not_found, "not found: " + std::string(path) +
-                                             " (routes: / the browser client, /healthz, /metrics, /ws)\n");
+                                             " (routes: / the browser client, /healthz, /readyz, /metrics, /ws)\n");
 }
 
 void HttpConnection::onWrite(bool keepAlive, beast::error_code error, std::size_t) {

@@ -13,7 +13,7 @@ namespace specula::net {
 struct ServerOptions {
   std::string bindAddress = "127.0.0.1";
   std::uint16_t port = 8080;  // 0: any free port (HttpServer::port() tells which)
-  std::string token;          // non-empty: every route but /healthz demands it
+  std::string token;          // non-empty: every route but /healthz and /readyz (and /metrics when public) demands it
   std::filesystem::path webRoot;  // files served at / (index.html for "/"); empty: none
   std::size_t maxMessageBytes = 64 * 1024;  // client WebSocket messages; larger closes with 1009
   std::size_t maxConnections = 256;         // open TCP connections; more are closed at once
@@ -23,6 +23,9 @@ struct ServerOptions {
   std::chrono::milliseconds firstMessageTimeout{5000};  // from the upgrade to the client's first message
   std::chrono::milliseconds idleTimeout{60000};      // no data (pings answered count) from the client
   std::function<std::string()> metricsText;          // GET /metrics body (Prometheus text format)
+  bool publicMetrics = false;                        // /metrics without the token (a scraper inside the cluster)
+  // GET /readyz: why no new session is taken now ("full", "draining": 503), or nullopt (200 "ready").
+  std::function<std::optional<std::string>()> notReady;
 };
 
 // True for 127.0.0.0/8, ::1 and "localhost": the addresses that need no token.

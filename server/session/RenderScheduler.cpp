@@ -77,6 +77,12 @@ void RenderScheduler::wake() {
   changed_.notify_all();
 }
 
+std::size_t RenderScheduler::waitingSessions() {
+  const Clock::time_point now = Clock::now();
+  std::lock_guard lock(mutex_);
+  return static_cast<std::size_t>(std::count_if(sessions_.begin(), sessions_.end(), [&](const auto& session) { return session->due(now).now; }));
+}
+
 void RenderScheduler::renderLoop(FrameRendererFactory factory) {
   auto renderer = factory();
   {

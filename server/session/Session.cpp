@@ -7,6 +7,8 @@
 #include "CameraConversions.h"
 #include "ProtocolCodec.h"
 #include "session/SessionHub.h"
+#include "session/SettingsProtocol.h"
+#include "session/SignedResume.h"
 
 namespace specula::session {
 
@@ -19,7 +21,6 @@ constexpr std::uint32_t kProtocolVersion = 1;
 constexpr float kMaxCoordinate = 1e7f;   // metres; beyond this float positions have no precision left
 constexpr float kMaxSpeed = 16.0f;
 constexpr double kMaxSceneMs = 1e12;
-constexpr int kMaxTessellationLevel = 8;
 
 std::atomic<std::uint64_t> nextSessionNumber{1};
 
@@ -32,35 +33,6 @@ double millisecondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double, std::milli>(to - from).count();
 }
 
-v1::RenderSettings settingsToProto(const SessionSettings& settings) {
-  v1::RenderSettings out;
-  out.set_method(settings.reflection.method == passes::ReflectionMethod::Search ? v1::SEARCH : v1::NONE);
-  const passes::TessellationSettings& t = settings.reflection.tessellation;
-  out.set_tessellation(t.mode == passes::TessellationMode::None    ? v1::TESSELLATION_NONE
-                       : t.mode == passes::TessellationMode::Paper ? v1::TESSELLATION_PAPER
-                                                                   : v1::TESSELLATION_CRACK_FREE);
-  out.set_metric(t.metric == passes::TessellationMetric::Pixels ? v1::METRIC_PIXELS : v1::METRIC_ANGLE);
-  out.set_threshold(t.threshold);
-  out.set_level(t.maxLevel == 0 ? -1 : t.maxLevel);
-  out.set_error_budget_px(settings.reflection.errorBudgetPixels == 0.0f ? -1.0f : settings.reflection.errorBudgetPixels);
-  out.set_resolution_scale(settings.resolutionScale);
-  out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
-  out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
-  out.set_still_samples(static_cast<std::uint32_t>(settings.stillSamples));
-  out.set_interactive_samples(static_cast<std::uint32_t>(settings.interactiveSamples));
-  out.set_plan(settings.reflection.plan == passes::PlanScope::Everything ? v1::PLAN_EVERYTHING : v1::PLAN_NEEDED);
-  switch (settings.reflection.search) {
-    case passes::SearchStrategy::Crosshair: out.set_search(v1::SEARCH_CROSSHAIR); break;
-    case passes::SearchStrategy::Hierarchy: out.set_search(v1::SEARCH_HIERARCHY); break;
-    case passes::SearchStrategy::ExplosionMap:
-      out.set_search(settings.reflection.explosionRefine ? v1::SEARCH_EXPLOSION_MAP_REFINED : v1::SEARCH_EXPLOSION_MAP);
-      break;
-  }
-  out.set_explosion_map_size(static_cast<std::uint32_t>(settings.reflection.explosionMapSize));
-  out.set_virtual_pixels(settings.reflection.virtualPixels == passes::VirtualPixels::AsPlaced ? v1::PIXELS_AS_PLACED : v1::PIXELS_EXACT_HIT);
-  out.set_extrusions(settings.reflection.solveExtrusions ? v1::EXTRUSIONS_SOLVE : v1::EXTRUSIONS_SEARCH);
-  return out;
-}
 
 std::string checkViewport(std::uint32_t width, std::uint32_t height, const HubOptions& options) {
   if (width < 1 || height < 1 || width > static_cast<std::uint32_t>(options.maxWidth) ||
@@ -185,8 +157,19 @@ void Session::onHello(const v1::Hello& hello, Clock::time_point now) {
     return closeForBadMessage(net::CloseCode::PolicyViolation, v1::Error::BAD_VALUE,
                               "hello: quality must be 1..100 (or 0 for the default)");
   std::optional<SessionState> restored;
-  if (!hello.resume_token().empty() && hello.resume_token().size() <= 64)
-    restored = hub_.resumeStore().take(hello.resume_token(), now);
+  std::string refusal;  // why the hello's token did not resume, told after the welcome
+  if (!hello.resume_token().empty()) {
+    if (const SignedResume* signedResume = hub_.signedResume()) {
+      Result<SessionState> opened = signedResume->open(hello.resume_token(), options.defaults, now, WallClock::now());
+      if (opened) restored = std::move(opened.value());
+      else refusal = opened.error();
+    } else {
+      if (hello.resume_token().size() <= 64) restored = hub_.resumeStore().take(hello.resume_token(), now);
+      if (!restored)
+        refusal = "resume token refused: this instance does not know it (tokens are kept " +
+                  std::to_string(options.resumeLifetime.count()) + " s and resume once; instances share none without --resume-secret-file)";
+    }
+  }
   v1::ServerMessage reply;
   {
     std::lock_guard lock(mutex_);
@@ -201,10 +184,15 @@ void Session::onHello(const v1::Hello& hello, Clock::time_point now) {
     if (hello.quality() > 0) state_.settings.jpegQuality = static_cast<int>(hello.quality());
     greeted_ = true;
     dirty_ = true;
-    resumeToken_ = randomToken();
+    const SignedResume* signedResume = hub_.signedResume();
+    resumeToken_ = signedResume ? signedResume->issue(state_, now, WallClock::now()) : randomToken();
     *reply.mutable_welcome() = welcome(restored.has_value(), now);
   }
   send(reply);
+  if (!refusal.empty()) {
+    hub_.metrics().resumesRefused++;
+    sendError(v1::Error::RESUME_REFUSED, refusal + "; this is a fresh session");
+  }
   if (restored) hub_.metrics().sessionsResumed++;
   hub_.sessionGreeted(shared_from_this());
 }
@@ -295,6 +283,10 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
     changes[index] = transform.matrix();
   }
   std::lock_guard lock(mutex_);
+  std::size_t overridden = state_.overrides.size();
+  for (const auto& [index, matrix] : changes) overridden += matrix && !state_.overrides.contains(index) ? 1 : 0;
+  if (overridden > SignedResume::kMaxOverrides)
+    return Error{"animation: at most " + std::to_string(SignedResume::kMaxOverrides) + " objects can be overridden at once; clear some first"};
   if (control.speed() != 0.0f) state_.clock.setSpeed(control.speed(), now);
   if (control.action() == v1::AnimationControl::PLAY) state_.clock.play(now);
   if (control.action() == v1::AnimationControl::PAUSE) state_.clock.pause(now);
@@ -308,96 +300,7 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
 
 Status Session::applySettings(const v1::RenderSettings& update) {
   std::lock_guard lock(mutex_);
-  SessionSettings settings = state_.settings;
-  passes::TessellationSettings& t = settings.reflection.tessellation;
-  switch (update.method()) {
-    case v1::SEARCH: settings.reflection.method = passes::ReflectionMethod::Search; break;
-    case v1::NONE: settings.reflection.method = passes::ReflectionMethod::None; break;
-    case v1::METHOD_UNSPECIFIED: break;
-    default: return Error{"settings: unknown method"};
-  }
-  switch (update.tessellation()) {
-    case v1::TESSELLATION_NONE: t.mode = passes::TessellationMode::None; break;
-    case v1::TESSELLATION_PAPER: t.mode = passes::TessellationMode::Paper; break;
-    case v1::TESSELLATION_CRACK_FREE: t.mode = passes::TessellationMode::CrackFree; break;
-    case v1::TESSELLATION_UNSPECIFIED: break;
-    default: return Error{"settings: unknown tessellation mode"};
-  }
-  switch (update.plan()) {
-    case v1::PLAN_NEEDED: settings.reflection.plan = passes::PlanScope::Needed; break;
-    case v1::PLAN_EVERYTHING: settings.reflection.plan = passes::PlanScope::Everything; break;
-    case v1::PLAN_UNSPECIFIED: break;
-    default: return Error{"settings: unknown plan scope"};
-  }
-  switch (update.search()) {
-    case v1::SEARCH_CROSSHAIR: settings.reflection.search = passes::SearchStrategy::Crosshair; break;
-    case v1::SEARCH_HIERARCHY: settings.reflection.search = passes::SearchStrategy::Hierarchy; break;
-    case v1::SEARCH_EXPLOSION_MAP:
-    case v1::SEARCH_EXPLOSION_MAP_REFINED:
-      settings.reflection.search = passes::SearchStrategy::ExplosionMap;
-      settings.reflection.explosionRefine = update.search() == v1::SEARCH_EXPLOSION_MAP_REFINED;
-      break;
-    case v1::SEARCH_UNSPECIFIED: break;
-    default: return Error{"settings: unknown search strategy"};
-  }
-  if (update.explosion_map_size() != 0) {
-    if (update.explosion_map_size() < static_cast<std::uint32_t>(passes::kMinExplosionMapSize) ||
-        update.explosion_map_size() > static_cast<std::uint32_t>(passes::kMaxExplosionMapSize))
-      return Error{"settings: explosion_map_size must be in [" + std::to_string(passes::kMinExplosionMapSize) + ", " +
-                   std::to_string(passes::kMaxExplosionMapSize) + "]"};
-    settings.reflection.explosionMapSize = static_cast<int>(update.explosion_map_size());
-  }
-  switch (update.virtual_pixels()) {
-    case v1::PIXELS_EXACT_HIT: settings.reflection.virtualPixels = passes::VirtualPixels::ExactHit; break;
-    case v1::PIXELS_AS_PLACED: settings.reflection.virtualPixels = passes::VirtualPixels::AsPlaced; break;
-    case v1::PIXELS_UNSPECIFIED: break;
-    default: return Error{"settings: unknown virtual pixels"};
-  }
-  switch (update.extrusions()) {
-    case v1::EXTRUSIONS_SOLVE: settings.reflection.solveExtrusions = true; break;
-    case v1::EXTRUSIONS_SEARCH: settings.reflection.solveExtrusions = false; break;
-    case v1::EXTRUSIONS_UNSPECIFIED: break;
-    default: return Error{"settings: unknown extrusions"};
-  }
-  switch (update.metric()) {
-    case v1::METRIC_PIXELS: t.metric = passes::TessellationMetric::Pixels; break;
-    case v1::METRIC_ANGLE: t.metric = passes::TessellationMetric::Angle; break;
-    case v1::METRIC_UNSPECIFIED: break;
-    default: return Error{"settings: unknown tessellation metric"};
-  }
-  if (update.threshold() != 0.0f) {
-    if (!std::isfinite(update.threshold()) || update.threshold() < 0.0f || update.threshold() > 1e4f)
-      return Error{"settings: threshold must be in (0, 1e4]"};
-    t.threshold = update.threshold();
-  }
-  if (update.level() != 0) {
-    if (update.level() < -1 || update.level() > kMaxTessellationLevel) return Error{"settings: level must be 0..8 (-1 for 0)"};
-    t.maxLevel = std::max(0, update.level());
-  }
-  if (update.error_budget_px() != 0.0f) {
-    const float budget = update.error_budget_px() == -1.0f ? 0.0f : update.error_budget_px();
-    if (!(budget >= 0.0f && budget <= passes::kMaxErrorBudgetPixels)) return Error{"settings: error_budget_px must be in [0, 16] (-1 for 0)"};
-    settings.reflection.errorBudgetPixels = budget;
-  }
-  if (update.resolution_scale() != 0.0f) {
-    if (!std::isfinite(update.resolution_scale()) || update.resolution_scale() < 0.05f || update.resolution_scale() > 1.0f)
-      return Error{"settings: resolution_scale must be in [0.05, 1]"};
-    settings.resolutionScale = update.resolution_scale();
-  }
-  for (auto [value, field] : {std::pair{update.jpeg_quality(), &settings.jpegQuality},
-                              {update.interactive_quality(), &settings.interactiveQuality}}) {
-    if (value == 0) continue;
-    if (value > 100) return Error{"settings: JPEG qualities must be 1..100"};
-    *field = static_cast<int>(value);
-  }
-  for (auto [value, field] : {std::pair{update.still_samples(), &settings.stillSamples},
-                              {update.interactive_samples(), &settings.interactiveSamples}}) {
-    if (value == 0) continue;
-    if (value > 16 || math::sampleCountProblem(static_cast<int>(value))) return Error{"settings: samples must be 1, 2, 4, 8 or 16"};
-    *field = static_cast<int>(value);
-  }
-  state_.settings = settings;
-  return {};
+  return applySettingsUpdate(update, state_.settings);
 }
 
 Status Session::applyResize(const v1::Resize& resize) {
@@ -495,6 +398,7 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     lastOutput_ = std::move(rendered);
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
+    if (const SignedResume* signedResume = hub_.signedResume()) frame.set_resume_token(signedResume->issue(state_, now, WallClock::now()));
     sink = sink_;
   }
   ServiceMetrics& metrics = hub_.metrics();
@@ -545,7 +449,7 @@ void Session::onClosed() {
   {
     std::lock_guard lock(mutex_);
     sink_.reset();
-    if (greeted_) saved = state_;
+    if (greeted_ && !hub_.signedResume()) saved = state_;  // signed tokens carry the state themselves
     token = resumeToken_;
   }
   if (saved) {  // freeze scene time at the disconnect; a resume continues from here, not from wall time

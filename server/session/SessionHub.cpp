@@ -15,6 +15,11 @@ SessionHub::~SessionHub() { stop(); }
 Result<std::unique_ptr<SessionHub>> SessionHub::start(std::shared_ptr<const scene::Scene> scene, HubOptions options,
                                                       FrameRendererFactory rendererFactory) {
   std::unique_ptr<SessionHub> hub(new SessionHub(std::move(scene), std::move(options)));
+  if (!hub->options_.resumeSecret.empty()) {
+    auto signedResume = SignedResume::create(hub->options_.resumeSecret, hub->options_.resumeLifetime, *hub->scene_);
+    if (!signedResume) return Error{signedResume.error()};
+    hub->signedResume_.emplace(std::move(signedResume.value()));
+  }
   auto scheduler = RenderScheduler::start(std::move(rendererFactory), hub->options_.scheduler);
   if (!scheduler) return Error{scheduler.error()};
   hub->scheduler_ = std::move(*scheduler);
@@ -57,6 +62,29 @@ void SessionHub::stop() {
     refusing_ = true;
     dropped.swap(sessions_);
   }
+}
+
+std::optional<std::string> SessionHub::notReady() const {
+  std::lock_guard lock(mutex_);
+  if (refusing_) return "draining";
+  if (sessions_.size() >= static_cast<std::size_t>(options_.maxSessions)) return "full";
+  return std::nullopt;
+}
+
+std::string SessionHub::prometheusText() const {
+  bool draining = false;
+  {
+    std::lock_guard lock(mutex_);
+    draining = refusing_;
+  }
+  std::string out = metrics_.prometheusText();
+  net::appendPrometheusSample(out, "specula_sessions_capacity", "gauge", "Sessions this instance admits (--max-sessions).",
+                              static_cast<double>(options_.maxSessions));
+  net::appendPrometheusSample(out, "specula_render_queue_depth", "gauge", "Sessions due a frame that wait for a render worker.",
+                              static_cast<double>(scheduler_ ? scheduler_->waitingSessions() : 0));
+  net::appendPrometheusSample(out, "specula_draining", "gauge", "1 while the instance refuses new sessions before it stops.",
+                              draining ? 1.0 : 0.0);
+  return out;
 }
 
 std::size_t SessionHub::sessionCount() const {

@@ -5,6 +5,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string>
 
 #include "base/Result.h"
 #include "net/Connection.h"
@@ -13,6 +15,7 @@
 #include "session/RenderScheduler.h"
 #include "session/ResumeStore.h"
 #include "session/ServiceMetrics.h"
+#include "session/SignedResume.h"
 #include "session/SessionState.h"
 
 namespace specula::session {
@@ -27,6 +30,9 @@ struct HubOptions {
   std::size_t maxMessageBytes = 64 * 1024;    // told to clients in Welcome.limits (net enforces it)
   std::size_t resumeCapacity = 1024;
   std::chrono::seconds resumeLifetime{600};
+  // Non-empty: resume tokens are signed (SignedResume) and carry the state, so any instance with the
+  // same secret resumes them; empty: this process keeps the states (ResumeStore).
+  std::string resumeSecret;
   SessionSettings defaults;  // settings a new session starts with
   SchedulerOptions scheduler;
 };
@@ -41,7 +47,8 @@ class SessionHub : public net::ConnectionAcceptor {
   std::shared_ptr<net::ConnectionHandler> accept(const net::UpgradeRequest& request,
                                                  std::shared_ptr<net::MessageSink> sink) override;
 
-  // From now on new connections are refused with SHUTTING_DOWN; rendering continues for open ones.
+  // From now on new connections are refused with SHUTTING_DOWN and /readyz says "draining";
+  // rendering continues for open ones.
   void refuseNewSessions();
   // Joins the render and encode threads and drops every session. Call after the network has stopped.
   void stop();
@@ -50,6 +57,11 @@ class SessionHub : public net::ConnectionAcceptor {
   const HubOptions& options() const { return options_; }
   ServiceMetrics& metrics() { return metrics_; }
   ResumeStore& resumeStore() { return resumes_; }
+  const SignedResume* signedResume() const { return signedResume_ ? &*signedResume_ : nullptr; }
+  // Why this instance takes no new session now ("full", "draining"), or nullopt: GET /readyz.
+  std::optional<std::string> notReady() const;
+  // Metrics plus the hub's gauges: capacity, render queue depth, draining.
+  std::string prometheusText() const;
   std::size_t sessionCount() const;
 
   // Session callbacks.
@@ -64,6 +76,7 @@ class SessionHub : public net::ConnectionAcceptor {
   HubOptions options_;
   ServiceMetrics metrics_;
   ResumeStore resumes_;
+  std::optional<SignedResume> signedResume_;
   std::unique_ptr<RenderScheduler> scheduler_;
   mutable std::mutex mutex_;
   std::map<const Session*, std::shared_ptr<Session>> sessions_;

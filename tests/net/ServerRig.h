@@ -90,7 +90,8 @@ class ServerRig {
     auto hub = session::SessionHub::start(scene_, options.hub, factory);
     EXPECT_TRUE(hub.ok());
     hub_ = std::move(*hub);
-    options.server.metricsText = [hub = hub_.get()] { return hub->metrics().prometheusText(); };
+    options.server.metricsText = [hub = hub_.get()] { return hub->prometheusText(); };
+    options.server.notReady = [hub = hub_.get()] { return hub->notReady(); };
     auto server = net::HttpServer::start(options.server, *hub_);
     if (!server) ADD_FAILURE() << server.error();
     else server_ = std::move(*server);

@@ -9,6 +9,7 @@ set -euo pipefail
 runtime_packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6   # headless GL: EGL (device/surfaceless) and OSMesa
   libglfw3 libturbojpeg0 libprotobuf32 libembree3-3  # clients, JPEG, protocol, reference ray tracer
+  libssl3                                            # HMAC-SHA256 of signed resume tokens
   gnuplot-nox                                        # specula bench accuracy draws its error/time plot
   ca-certificates
 )
@@ -16,11 +17,12 @@ build_packages=(
   build-essential cmake ninja-build pkg-config git
   libglm-dev libegl-dev libgl-dev libosmesa6-dev libglfw3-dev
   libturbojpeg0-dev libboost-dev libprotobuf-dev protobuf-compiler
-  libembree-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
+  libembree-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev libssl-dev
   libgtest-dev          # the test suite is configured with the build (small)
 )
 test_packages=(
   chromium xvfb xauth   # tests: the browser client in headless Chromium, specula-view under Xvfb
+  haproxy yamllint      # docker/lint-deploy.sh: the HAProxy front and the Kubernetes manifests
 )
 
 mode="${1:-}"

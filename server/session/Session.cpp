@@ -228,6 +228,7 @@ v1::Welcome Session::welcome(bool resumed, Clock::time_point now) const {
   out.set_playing(state_.clock.playing());
   out.set_scene_time_ms(sceneMs);
   out.set_speed(state_.clock.speed());
+  out.set_instance(hub_.instanceName());
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "session/SessionHub.h"
 
+#include <unistd.h>
+
 #include "ProtocolCodec.h"
 #include "session/Session.h"
 
@@ -8,7 +10,11 @@ namespace specula::session {
 SessionHub::SessionHub(std::shared_ptr<const scene::Scene> scene, HubOptions options)
     : scene_(std::move(scene)),
       options_(std::move(options)),
-      resumes_(options_.resumeCapacity, options_.resumeLifetime) {}
+      resumes_(options_.resumeCapacity, options_.resumeLifetime) {
+  char host[256] = "";
+  gethostname(host, sizeof host - 1);
+  instanceName_ = std::string(host) + ":" + std::to_string(getpid());
+}
 
 SessionHub::~SessionHub() { stop(); }
 

@@ -63,6 +63,8 @@ class SessionHub : public net::ConnectionAcceptor {
   // Metrics plus the hub's gauges: capacity, render queue depth, draining.
   std::string prometheusText() const;
   std::size_t sessionCount() const;
+  // This process among its peers: "host:pid" (Welcome.instance).
+  const std::string& instanceName() const { return instanceName_; }
 
   // Session callbacks.
   void sessionGreeted(const std::shared_ptr<Session>& session);
@@ -81,6 +83,7 @@ class SessionHub : public net::ConnectionAcceptor {
   mutable std::mutex mutex_;
   std::map<const Session*, std::shared_ptr<Session>> sessions_;
   bool refusing_ = false;
+  std::string instanceName_;
 };
 
 }  // namespace specula::session

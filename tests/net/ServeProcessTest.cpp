@@ -1,96 +1,33 @@
 // `specula serve` as users run it: a real process with the GL renderer (software GL is fine), real
 // clients, real signals.
 #include <gtest/gtest.h>
-#include <poll.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <turbojpeg.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <vector>
 
 #include "SpeculaClient.h"
+#include "app/ChildProcess.h"
 
 namespace specula::testing {
 namespace {
 
 using namespace std::chrono_literals;
 
-// A child process with stdout and stderr captured into one pipe.
-class Process {
- public:
-  explicit Process(std::vector<std::string> arguments) {
-    int fds[2];
-    if (pipe(fds) != 0) return;
-    pid_ = fork();
-    if (pid_ == 0) {
-      dup2(fds[1], STDOUT_FILENO);
-      dup2(fds[1], STDERR_FILENO);
-      close(fds[0]);
-      std::vector<char*> argv;
-      for (std::string& argument : arguments) argv.push_back(argument.data());
-      argv.push_back(nullptr);
-      execv(argv[0], argv.data());
-      _exit(127);
-    }
-    close(fds[1]);
-    output_ = fds[0];
-  }
-  ~Process() {
-    if (pid_ > 0 && !exited_) {
-      kill(pid_, SIGKILL);
-      waitpid(pid_, nullptr, 0);
-    }
-    if (output_ >= 0) close(output_);
-  }
-  pid_t pid() const { return pid_; }
+// A started `specula serve` (or a failed expectation and null).
+std::unique_ptr<app::ChildProcess> serve(std::vector<std::string> arguments) {
+  arguments.insert(arguments.begin(), {SPECULA_BINARY, "serve"});
+  auto process = app::ChildProcess::start(std::move(arguments));
+  EXPECT_TRUE(process) << process.error();
+  return process ? std::move(*process) : nullptr;
+}
 
-  // Reads output until `pattern` matches it; returns the match or an empty match on timeout/exit.
-  std::smatch waitFor(const std::regex& pattern, std::chrono::milliseconds timeout) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    std::smatch match;
-    while (!std::regex_search(text_, match, pattern)) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-      if (left <= 0ms || !readSome(left)) return {};
-    }
-    return match;
-  }
-  // Waits for exit; returns the exit status, or -1 on timeout or a signal.
-  int waitExit(std::chrono::milliseconds timeout) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (std::chrono::steady_clock::now() < deadline) {
-      int status = 0;
-      if (waitpid(pid_, &status, WNOHANG) == pid_) {
-        exited_ = true;
-        while (readSome(10ms)) {}
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      }
-      readSome(20ms);
-    }
-    return -1;
-  }
-  const std::string& output() const { return text_; }
-
- private:
-  bool readSome(std::chrono::milliseconds timeout) {
-    pollfd fd{output_, POLLIN, 0};
-    if (poll(&fd, 1, static_cast<int>(timeout.count())) <= 0) return false;
-    char buffer[4096];
-    const ssize_t count = read(output_, buffer, sizeof buffer);
-    if (count <= 0) return false;
-    text_.append(buffer, static_cast<std::size_t>(count));
-    return true;
-  }
-
-  pid_t pid_ = -1;
-  int output_ = -1;
-  bool exited_ = false;
-  std::string text_;
-};
+const std::regex kListening("listening on 127\\.0\\.0\\.1:(\\d+)");
 
 // Standard deviation of a frame's grey levels: 0 for a blank frame.
 double greyDeviation(const v1::Frame& frame) {
@@ -127,10 +64,11 @@ std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, net::En
 }
 
 TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWithinASecond) {
-  Process server({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad"});
-  const std::smatch listening = server.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
-  ASSERT_FALSE(listening.empty()) << server.output();
-  const auto port = static_cast<std::uint16_t>(std::stoi(listening[1]));
+  auto server = serve({"--port", "0", "--scene", "quad"});
+  ASSERT_TRUE(server);
+  const auto listening = server->waitFor(kListening, 120s);
+  ASSERT_TRUE(listening) << server->output();
+  const auto port = static_cast<std::uint16_t>(std::stoi((*listening)[1]));
 
   std::vector<std::unique_ptr<client::SpeculaClient>> clients;
   for (net::Encoding encoding : {net::Encoding::Proto, net::Encoding::Json}) {
@@ -139,7 +77,7 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
     std::optional<v1::Frame> frame;
     for (int i = 0; i < 10 && !frame; ++i) {
       auto message = client->receive(60s);
-      ASSERT_TRUE(message) << message.error() << "\n" << server.output();
+      ASSERT_TRUE(message) << message.error() << "\n" << server->output();
       if (message->has_frame()) frame = message->frame();
     }
     ASSERT_TRUE(frame);
@@ -155,29 +93,30 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
   }
 
   const auto start = std::chrono::steady_clock::now();
-  ASSERT_EQ(kill(server.pid(), SIGTERM), 0);
+  ASSERT_EQ(kill(server->pid(), SIGTERM), 0);
   for (auto& client : clients) {
     while (!client->closeInfo() && std::chrono::steady_clock::now() - start < 1s) (void)client->receive(100ms);
     ASSERT_TRUE(client->closeInfo()) << "closed within 1 s of SIGTERM";
     EXPECT_EQ(client->closeInfo()->code, 1001);
   }
   EXPECT_LT(std::chrono::steady_clock::now() - start, 1s);
-  EXPECT_EQ(server.waitExit(5s), 0) << server.output();
+  EXPECT_EQ(server->waitExit(5s), std::optional<int>(0)) << server->output();
 }
 
 // Every search option `serve --help` lists as a sessions' default reaches a new session.
 TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
-  Process server({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine",
+  auto server = serve({"--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine",
                   "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed", "--extrusions", "search",
                   "--still-samples", "16", "--interactive-samples", "2"});
-  const std::smatch listening = server.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
-  ASSERT_FALSE(listening.empty()) << server.output();
-  auto client = greetedClient(static_cast<std::uint16_t>(std::stoi(listening[1])), net::Encoding::Proto, 64, 48);
+  ASSERT_TRUE(server);
+  const auto listening = server->waitFor(kListening, 120s);
+  ASSERT_TRUE(listening) << server->output();
+  auto client = greetedClient(static_cast<std::uint16_t>(std::stoi((*listening)[1])), net::Encoding::Proto, 64, 48);
   ASSERT_TRUE(client);
   std::optional<v1::Welcome> welcome;
   for (int i = 0; i < 10 && !welcome; ++i) {
     auto message = client->receive(60s);
-    ASSERT_TRUE(message) << message.error() << "\n" << server.output();
+    ASSERT_TRUE(message) << message.error() << "\n" << server->output();
     if (message->has_welcome()) welcome = message->welcome();
   }
   ASSERT_TRUE(welcome);
@@ -190,25 +129,42 @@ TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
 }
 
 TEST(ServeProcess, RefusesASampleCountWithoutAPattern) {
-  Process server({SPECULA_BINARY, "serve", "--port", "0", "--still-samples", "6"});
-  EXPECT_EQ(server.waitExit(30s), 1);
-  EXPECT_NE(server.output().find("--still-samples: samples per pixel must be 1, 2, 4, 8 or 16, got 6"), std::string::npos) << server.output();
+  auto server = serve({"--port", "0", "--still-samples", "6"});
+  ASSERT_TRUE(server);
+  EXPECT_EQ(server->waitExit(30s), std::optional<int>(1));
+  EXPECT_NE(server->output().find("--still-samples: samples per pixel must be 1, 2, 4, 8 or 16, got 6"), std::string::npos) << server->output();
+}
+
+TEST(ServeProcess, RefusesAMissingOrShortResumeSecretBeforeStarting) {
+  auto missing = serve({"--port", "0", "--resume-secret-file", "/nonexistent/resume.secret"});
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->waitExit(30s), std::optional<int>(1));
+  EXPECT_NE(missing->output().find("--resume-secret-file: /nonexistent/resume.secret"), std::string::npos) << missing->output();
+  const std::string shortSecret = ::testing::TempDir() + "short.secret";
+  std::ofstream(shortSecret) << "too short\n";
+  auto weak = serve({"--port", "0", "--resume-secret-file", shortSecret});
+  ASSERT_TRUE(weak);
+  EXPECT_EQ(weak->waitExit(30s), std::optional<int>(1));
+  EXPECT_NE(weak->output().find("the resume secret has 9 bytes; use at least 32"), std::string::npos) << weak->output();
 }
 
 TEST(ServeProcess, RefusesANonLoopbackBindWithoutAToken) {
-  Process server({SPECULA_BINARY, "serve", "--bind", "0.0.0.0", "--port", "0"});
-  EXPECT_EQ(server.waitExit(30s), 1);
-  EXPECT_NE(server.output().find("--token"), std::string::npos) << server.output();
+  auto server = serve({"--bind", "0.0.0.0", "--port", "0"});
+  ASSERT_TRUE(server);
+  EXPECT_EQ(server->waitExit(30s), std::optional<int>(1));
+  EXPECT_NE(server->output().find("--token"), std::string::npos) << server->output();
 }
 
 TEST(ServeProcess, SaysWhenThePortIsTaken) {
-  Process first({SPECULA_BINARY, "serve", "--port", "0", "--scene", "quad"});
-  const std::smatch listening = first.waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), 120s);
-  ASSERT_FALSE(listening.empty()) << first.output();
-  Process second({SPECULA_BINARY, "serve", "--port", listening[1].str(), "--scene", "quad"});
-  EXPECT_EQ(second.waitExit(120s), 1);
-  EXPECT_NE(second.output().find("cannot listen on 127.0.0.1:" + listening[1].str()), std::string::npos)
-      << second.output();
+  auto first = serve({"--port", "0", "--scene", "quad"});
+  ASSERT_TRUE(first);
+  const auto listening = first->waitFor(kListening, 120s);
+  ASSERT_TRUE(listening) << first->output();
+  auto second = serve({"--port", (*listening)[1], "--scene", "quad"});
+  ASSERT_TRUE(second);
+  EXPECT_EQ(second->waitExit(120s), std::optional<int>(1));
+  EXPECT_NE(second->output().find("cannot listen on 127.0.0.1:" + (*listening)[1]), std::string::npos)
+      << second->output();
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #pragma once
 // The command-line options every client shares: where the server is and which encoding to speak.
+#include "ResumingClient.h"
 #include "SpeculaClient.h"
 #include "base/CommandLine.h"
 
@@ -8,9 +9,10 @@ namespace specula::client {
 struct Connection {
   ServerAddress address;
   net::Encoding encoding = net::Encoding::Proto;
+  ReconnectPolicy reconnect;
 };
 
-// --url and --encoding, for a tool's option table.
+// --url, --encoding and --reconnect-attempts, for a tool's option table.
 std::vector<OptionSpec> connectionOptions();
 // Reads them, or says which is wrong and what it accepts.
 Result<Connection> parseConnectionOptions(const CommandLine& options);

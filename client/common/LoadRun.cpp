@@ -31,26 +31,23 @@ OrbitCamera orbitFor(const v1::SceneInfo& scene, int session, int sessions) {
 SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point measureFrom, Clock::time_point end,
                        std::atomic<std::uint64_t>& framesSoFar) {
   SessionLoad result;
-  auto connected = SpeculaClient::connect(options.address, options.encoding);
+  v1::Hello hello;
+  hello.set_protocol_version(1);
+  hello.set_width(static_cast<std::uint32_t>(options.width));
+  hello.set_height(static_cast<std::uint32_t>(options.height));
+  auto connected = ResumingClient::connect(options.address, options.encoding, hello, options.reconnect);
   if (!connected) {
     result.error = connected.error();
     return result;
   }
-  SpeculaClient& client = **connected;
-  v1::ClientMessage hello;
-  hello.mutable_hello()->set_protocol_version(1);
-  hello.mutable_hello()->set_width(static_cast<std::uint32_t>(options.width));
-  hello.mutable_hello()->set_height(static_cast<std::uint32_t>(options.height));
-  if (Status sent = client.send(hello); !sent) {
-    result.error = sent.error();
-    return result;
-  }
+  ResumingClient& client = **connected;
   std::optional<OrbitCamera> start;  // the session's orbit at time 0, once the welcome names the scene
   const auto inputInterval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.inputHz));
   Clock::time_point nextInput = Clock::now();
   const Clock::time_point began = Clock::now();
   std::uint64_t sequence = 0;
   double renderSum = 0.0, encodeSum = 0.0, serverSum = 0.0;
+  std::optional<Clock::time_point> lastFrame;
   while (Clock::now() < end) {
     if (start && Clock::now() >= nextInput) {
       const double seconds = std::chrono::duration<double>(Clock::now() - began).count();
@@ -74,11 +71,18 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
       continue;  // timed out: time for the next input
     }
     if (message->has_welcome()) start = orbitFor(message->welcome().scene(), index, options.sessions);
+    if (message->has_error() && message->error().code() == v1::Error::RESUME_REFUSED) {
+      ++result.resumesRefused;  // a fresh session after a reconnect: the orbit goes on
+      continue;
+    }
     if (message->has_error()) {
       result.error = "server error: " + message->error().message();
       break;
     }
     if (!message->has_frame() || Clock::now() < measureFrom) continue;
+    const Clock::time_point arrived = Clock::now();
+    if (lastFrame) result.longestGapMs = std::max(result.longestGapMs, std::chrono::duration<double, std::milli>(arrived - *lastFrame).count());
+    lastFrame = arrived;
     const v1::Frame& frame = message->frame();
     ++result.frames;
     ++framesSoFar;
@@ -89,6 +93,7 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
     encodeSum += frame.encode_ms();
     serverSum += frame.server_ms();
   }
+  result.reconnects = client.reconnects();
   client.close();
   const double seconds = std::chrono::duration<double>(end - measureFrom).count();
   result.fps = static_cast<double>(result.frames) / seconds;
@@ -169,6 +174,9 @@ std::string loadReportJson(const LoadReport& report) {
                         {"render_ms_mean", s.renderMsMean},
                         {"encode_ms_mean", s.encodeMsMean},
                         {"server_ms_mean", s.serverMsMean},
+                        {"reconnects", s.reconnects},
+                        {"resumes_refused", s.resumesRefused},
+                        {"longest_gap_ms", s.longestGapMs},
                         {"error", s.error}});
   const LoadOptions& o = report.options;
   nlohmann::json out = {

@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
   load.duration = std::chrono::milliseconds(static_cast<long>(*seconds * 1000.0));
   load.warmup = std::chrono::milliseconds(static_cast<long>(*warmup * 1000.0));
   load.inputHz = *inputHz;
+  load.reconnect = connection->reconnect;
   load.progress = [&](double elapsed, std::uint64_t frames) {
     std::fprintf(stderr, "\rspecula-load: %.0f/%.0f s, %llu frames from %d sessions   ", elapsed, *seconds,
                  static_cast<unsigned long long>(frames), *sessions);
@@ -71,13 +72,13 @@ int main(int argc, char** argv) {
 
   std::printf("%d sessions, %dx%d, %s, %.0f s measured (after %.0f s warm-up)\n", *sessions, load.width, load.height,
               options.text("encoding").c_str(), *seconds, *warmup);
-  std::printf("session   fps  latency p50  p99 ms  render ms  encode ms  KB/frame  skipped  error\n");
+  std::printf("session   fps  latency p50  p99 ms  render ms  encode ms  KB/frame  skipped  reconnects  longest gap ms  error\n");
   for (std::size_t i = 0; i < report.sessions.size(); ++i) {
     const client::SessionLoad& s = report.sessions[i];
-    std::printf("%7zu  %5.1f  %11.1f  %6.1f  %9.1f  %9.2f  %8.1f  %7llu  %s\n", i + 1, s.fps,
+    std::printf("%7zu  %5.1f  %11.1f  %6.1f  %9.1f  %9.2f  %8.1f  %7llu  %10d  %14.0f  %s\n", i + 1, s.fps,
                 client::percentile(s.latencyMs, 50), client::percentile(s.latencyMs, 99), s.renderMsMean,
                 s.encodeMsMean, s.frames ? static_cast<double>(s.bytes) / static_cast<double>(s.frames) / 1024.0 : 0.0,
-                static_cast<unsigned long long>(s.skippedFrames), s.error.empty() ? "-" : s.error.c_str());
+                static_cast<unsigned long long>(s.skippedFrames), s.reconnects, s.longestGapMs, s.error.empty() ? "-" : s.error.c_str());
   }
   std::printf("all      fps/session %.1f (min %.1f), latency p50 %.1f ms, p99 %.1f ms, max %.1f ms; %llu frames, "
               "%.1f KB/frame, %llu skipped, %llu errors\n",

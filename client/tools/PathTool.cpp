@@ -11,7 +11,7 @@
 #include "CameraPath.h"
 #include "ConnectionOptions.h"
 #include "LoadRun.h"
-#include "SpeculaClient.h"
+#include "ResumingClient.h"
 #include "base/CommandLine.h"
 
 namespace {
@@ -103,14 +103,16 @@ int main(int argc, char** argv) {
   csv << "sample,path_time_s,input_sequence,frame,latency_ms,render_ms,encode_ms,server_ms,bytes,still,width,height,"
          "scene_time_ms,mirrors,searched,mean_steps,unsolved,tess_input,tess_finished,midpoint_searches,stages\n";
 
-  auto connected = client::SpeculaClient::connect(connection->address, connection->encoding);
+  v1::Hello hello;
+  hello.set_protocol_version(1);
+  hello.set_width(static_cast<std::uint32_t>(size->first));
+  hello.set_height(static_cast<std::uint32_t>(size->second));
+  // A lost connection is retried and the session resumed; the user is told on stderr.
+  auto connected = client::ResumingClient::connect(connection->address, connection->encoding, hello, connection->reconnect,
+                                                   [](const std::string& notice) { std::fprintf(stderr, "\nspecula-path: %s\n", notice.c_str()); });
   if (!connected) return fail(connected.error());
-  client::SpeculaClient& client = **connected;
-  v1::ClientMessage hello;
-  hello.mutable_hello()->set_protocol_version(1);
-  hello.mutable_hello()->set_width(static_cast<std::uint32_t>(size->first));
-  hello.mutable_hello()->set_height(static_cast<std::uint32_t>(size->second));
-  if (Status sent = client.send(hello); !sent) return fail(sent.error());
+  client::ResumingClient& client = **connected;
+  const bool seeks = path->keys.front().sceneTime.has_value();
 
   const auto frameTimeout = std::chrono::milliseconds(static_cast<long>(*timeout * 1000.0));
   std::string problem;
@@ -127,10 +129,15 @@ int main(int argc, char** argv) {
       else if (message.error().find("timed out") == std::string::npos) problem = message.error();
       return std::nullopt;
     }
-    if (message->has_error()) {
+    if (message->has_error() && message->error().code() == v1::Error::RESUME_REFUSED) {
+      std::fprintf(stderr, "\nspecula-path: %s\n", message->error().message().c_str());  // the path sets camera and time anyway
+    } else if (message->has_error()) {
       problem = "server error " + v1::Error::Code_Name(message->error().code()) + ": " + message->error().message();
       return std::nullopt;
     }
+    // A reconnect that could not resume starts playing again; the path holds the clock itself.
+    if (message->has_welcome() && client.reconnects() > 0 && !message->welcome().resumed() && seeks)
+      (void)client.send(animationMessage(v1::AnimationControl::PAUSE, 0.0));
     if (message->has_frame()) {
       const v1::Frame& frame = message->frame();
       auto sent = sentAt.find(frame.input_sequence());
@@ -154,7 +161,6 @@ int main(int argc, char** argv) {
     if (!message && problem.empty()) problem = "no welcome from the server within --timeout";
     if (message && message->has_welcome()) break;
   }
-  const bool seeks = path->keys.front().sceneTime.has_value();
   if (problem.empty() && seeks) (void)client.send(animationMessage(v1::AnimationControl::PAUSE, 0.0));
 
   const std::size_t samples = static_cast<std::size_t>(std::floor(path->duration() * *fps)) + 1;

@@ -17,7 +17,7 @@
 #include "ConnectionOptions.h"
 #include "LoadRun.h"
 #include "OrbitCamera.h"
-#include "SpeculaClient.h"
+#include "ResumingClient.h"
 #include "base/CommandLine.h"
 #include "encode/PngEncoder.h"
 
@@ -42,7 +42,7 @@ struct Link {
   std::uint64_t framesReceived = 0;
 };
 
-void runNetwork(client::SpeculaClient& client, Link& link) {
+void runNetwork(client::ResumingClient& client, Link& link) {
   while (!link.stop) {
     std::deque<v1::ClientMessage> outgoing;
     {
@@ -65,7 +65,8 @@ void runNetwork(client::SpeculaClient& client, Link& link) {
       continue;
     }
     if (message->has_welcome()) link.welcome = message->welcome();
-    if (message->has_error()) link.problem = "server: " + message->error().message();
+    if (message->has_error() && message->error().code() == v1::Error::RESUME_REFUSED) std::printf("specula-view: %s\n", message->error().message().c_str());
+    else if (message->has_error()) link.problem = "server: " + message->error().message();
     if (message->has_frame()) {
       link.latestFrame = std::move(*message->mutable_frame());
       ++link.framesReceived;
@@ -127,7 +128,16 @@ int main(int argc, char** argv) {
   if (!frameLimit) return fail(frameLimit.error());
   if (!seconds || *seconds < 0.0) return fail("--seconds expects a number >= 0");
 
-  auto connected = client::SpeculaClient::connect(connection->address, connection->encoding);
+  // A lost connection is retried and the session resumed (camera, animation, settings); said on stdout.
+  v1::Hello hello;
+  hello.set_protocol_version(1);
+  hello.set_width(static_cast<std::uint32_t>(size->first));
+  hello.set_height(static_cast<std::uint32_t>(size->second));
+  auto connected = client::ResumingClient::connect(connection->address, connection->encoding, hello, connection->reconnect,
+                                                   [](const std::string& notice) {
+                                                     std::printf("specula-view: %s\n", notice.c_str());
+                                                     std::fflush(stdout);
+                                                   });
   if (!connected) return fail(connected.error());
   if (!glfwInit()) return fail("cannot open a window: no display (set DISPLAY, or run under xvfb-run)");
   GLFWwindow* window = glfwCreateWindow(size->first, size->second, "Specula", nullptr, nullptr);
@@ -153,11 +163,12 @@ int main(int argc, char** argv) {
   glfwSetWindowUserPointer(window, &viewer);
   int framebufferWidth = 0, framebufferHeight = 0;
   glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
-  v1::ClientMessage hello;
-  hello.mutable_hello()->set_protocol_version(1);
-  hello.mutable_hello()->set_width(static_cast<std::uint32_t>(std::max(1, framebufferWidth)));
-  hello.mutable_hello()->set_height(static_cast<std::uint32_t>(std::max(1, framebufferHeight)));
-  viewer.send(hello);
+  if (framebufferWidth != size->first || framebufferHeight != size->second) {  // a HiDPI window has more pixels than asked for
+    v1::ClientMessage resize;
+    resize.mutable_resize()->set_width(static_cast<std::uint32_t>(std::max(1, framebufferWidth)));
+    resize.mutable_resize()->set_height(static_cast<std::uint32_t>(std::max(1, framebufferHeight)));
+    viewer.send(resize);
+  }
   std::thread network([&] { runNetwork(**connected, link); });
 
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {

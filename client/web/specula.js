@@ -27,6 +27,8 @@
     playing: true,
     resumeToken: sessionStorage.getItem('specula.resume') || '',
     reconnectDelayMs: 500,
+    reconnectAttempt: 0,   // tries since the connection was lost; 0 while connected
+    reconnects: 0,         // connections lost and won back
     decoding: false,
     pendingFrame: null,
     bitmap: null,          // the last decoded frame, redrawn when the canvas is resized
@@ -71,6 +73,7 @@
       try { message = JSON.parse(event.data); } catch (e) { showStatus(`unreadable message from the server: ${e}`); return; }
       if (message.welcome) onWelcome(message.welcome);
       else if (message.frame) onFrame(message.frame);
+      else if (message.error?.code === 'RESUME_REFUSED') showStatus(`Reconnected as a fresh session: ${message.error.message}`, 'info');
       else if (message.error) showStatus(`server: ${message.error.message} (${message.error.code})`);
     };
     socket.onclose = (event) => onClose(event);
@@ -85,6 +88,9 @@
     1013: 'the server is full',
   };
 
+  // Tries per loss, with the delay doubling from 0.5 s to 8 s: about a minute before giving up.
+  const kMaxReconnectAttempts = 10;
+
   function onClose(event) {
     const why = closeExplanations[event.code] || `closed (${event.code})`;
     const reason = event.reason ? `: ${event.reason}` : '';
@@ -93,9 +99,15 @@
       showStatus(`Disconnected — ${why}${reason}. Reload the page to start again.`);
       return;
     }
+    if (state.reconnectAttempt >= kMaxReconnectAttempts) {
+      showStatus(`Disconnected — ${why}${reason}. Gave up after ${kMaxReconnectAttempts} attempts; reload the page to try again.`);
+      return;
+    }
     const delay = state.reconnectDelayMs;
     state.reconnectDelayMs = Math.min(8000, delay * 2);
-    showStatus(`Disconnected — ${why}${reason}. Reconnecting in ${(delay / 1000).toFixed(1)} s…`, 'info');
+    state.reconnectAttempt++;
+    showStatus(`Disconnected — ${why}${reason}. Reconnecting (attempt ${state.reconnectAttempt} of ${kMaxReconnectAttempts}) ` +
+               `in ${(delay / 1000).toFixed(1)} s${state.resumeToken ? ', to resume this view' : ''}…`, 'info');
     setTimeout(connect, delay);
   }
 
@@ -272,9 +284,10 @@
   function onWelcome(welcome) {
     state.welcome = welcome;
     state.reconnectDelayMs = 500;
+    if (state.reconnectAttempt > 0) state.reconnects++;
+    state.reconnectAttempt = 0;
     state.limits = { max_width: welcome.limits.maxWidth, max_height: welcome.limits.maxHeight };
-    state.resumeToken = welcome.resumeToken;
-    sessionStorage.setItem('specula.resume', welcome.resumeToken);
+    keepResumeToken(welcome.resumeToken);
     state.playing = welcome.playing;
     $('play').textContent = state.playing ? 'Pause' : 'Play';
     showSettings(welcome.settings);
@@ -300,7 +313,15 @@
     if (params.has('time')) animation({ action: 'SEEK', timeMs: Number(params.get('time')) });
   }
 
+  // The token that brings this view back after a reconnect, here or (stateless resume) on any instance.
+  function keepResumeToken(token) {
+    if (!token || token === state.resumeToken) return;
+    state.resumeToken = token;
+    sessionStorage.setItem('specula.resume', token);
+  }
+
   function onFrame(frame) {
+    keepResumeToken(frame.resumeToken);
     if (state.decoding) { state.pendingFrame = frame; return; }  // latest wins while one decodes
     state.decoding = true;
     const bytes = Uint8Array.from(atob(frame.jpeg), (c) => c.charCodeAt(0));

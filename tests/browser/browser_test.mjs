@@ -120,8 +120,11 @@ function greyDeviation(a) {
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 let server, browser;
+// Signed resume: a server started again with the same secret resumes the page's session.
+const secretFile = join(work, 'resume.secret');
+writeFileSync(secretFile, 'browser-test-resume-secret-0123456789abcdef\n');
 try {
-  ({ child: server } = await startAndWaitFor(specula, ['serve', '--port', '0', '--scene', 'checker-sphere'],
+  ({ child: server } = await startAndWaitFor(specula, ['serve', '--port', '0', '--scene', 'checker-sphere', '--resume-secret-file', secretFile],
     /listening on 127\.0\.0\.1:(\d+)/, 120000).then((r) => { r.port = Number(r.match[1]); return r; }).then((r) => {
     globalThis.serverPort = r.port; return r;
   }));
@@ -215,6 +218,32 @@ try {
     `${mapped.search.searched} vertices, max ${mapped.search.maxSteps} look-ups; status: ${await evaluate("document.getElementById('status').textContent")}`);
   const latency = await evaluate('window.specula.latencyMs');
   check('input-to-frame latency is measured', typeof latency === 'number' && latency > 0, String(latency));
+
+  // The server dies and comes back (same port, same secret): the page says it is reconnecting, then
+  // that it resumed, with the dragged camera and the explosion-map settings.
+  const exitedServer = new Promise((resolve) => server.on('exit', resolve));
+  server.kill('SIGKILL');
+  await exitedServer;
+  let reconnecting = '';
+  for (let i = 0; i < 50 && !/Reconnecting \(attempt 1 of 10\)/.test(reconnecting); i++) {
+    reconnecting = await evaluate("document.getElementById('status').textContent");
+    await sleep(50);
+  }
+  const { data: wholePage } = await page('Page.captureScreenshot', { format: 'png' });
+  writeFileSync(join(keepDir || work, 'browser-reconnecting.png'), Buffer.from(wholePage, 'base64'));  // to look at
+  check('when the server is gone the page says it is reconnecting', /Reconnecting \(attempt 1 of 10\) in .* to resume this view/.test(reconnecting), reconnecting);
+  ({ child: server } = await startAndWaitFor(specula, ['serve', '--port', String(port), '--scene', 'checker-sphere', '--resume-secret-file', secretFile],
+    /listening on 127\.0\.0\.1:(\d+)/, 120000));
+  let resumed = null;
+  for (let i = 0; i < 300 && !resumed; i++) {
+    resumed = await evaluate("(() => { const s = window.specula; return s.reconnects >= 1 && s.welcome && s.welcome.resumed ? { welcome: s.welcome, status: document.getElementById('status').textContent } : null; })()");
+    if (!resumed) await sleep(100);
+  }
+  check('the page reconnects and resumes its session on the restarted server', resumed !== null &&
+    /camera, animation and settings restored/.test(resumed.status), JSON.stringify(resumed?.status));
+  check('with the camera and settings it had', resumed !== null && Math.abs(resumed.welcome.camera.eye.x - moved.camera.eye.x) < 1e-3 &&
+    resumed.welcome.settings.search === 'SEARCH_EXPLOSION_MAP' && resumed.welcome.settings.plan === 'PLAN_EVERYTHING',
+    JSON.stringify(resumed?.welcome.camera.eye));
 } catch (error) {
   check('browser test ran', false, error.stack || String(error));
 } finally {

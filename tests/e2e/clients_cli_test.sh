@@ -59,6 +59,29 @@ check "its window showed the scene, not a blank" test "$(stat -c %s "$work/view.
 "$bin/specula-view" --url "ws://127.0.0.1:1" >"$work/vdown.out" 2>&1
 check "specula-view says when the server is unreachable" bash -c "grep -q 'cannot connect to 127.0.0.1:1' '$work/vdown.out'"
 
+# A server that dies mid-path comes back on the same port with the same resume secret: specula-path
+# reconnects, resumes its session and says so, and the run ends well.
+head -c 48 /dev/urandom | base64 >"$work/resume.secret"
+"$specula" serve --port 0 --scene quad --resume-secret-file "$work/resume.secret" >"$work/first.log" 2>&1 &
+first=$!
+for _ in $(seq 600); do grep -q "listening on" "$work/first.log" && break; sleep 0.1; done
+port2=$(sed -n 's/.*listening on 127\.0\.0\.1:\([0-9]*\).*/\1/p' "$work/first.log")
+cat >"$work/long.json" <<'JSON'
+{"keys": [{"time": 0, "eye": [0, 1, 5], "target": [0, 0, 0], "fov": 45}, {"time": 4, "eye": [3, 1, 4], "target": [0, 0, 0], "fov": 40}]}
+JSON
+"$bin/specula-path" --url "ws://127.0.0.1:$port2" --path "$work/long.json" --pace realtime --fps 10 --size 64x48 \
+  --csv "$work/resumed.csv" >"$work/resumed.out" 2>"$work/resumed.err" &
+path=$!
+sleep 1.5
+kill -9 $first; wait $first 2>/dev/null
+"$specula" serve --port "$port2" --scene quad --resume-secret-file "$work/resume.secret" >"$work/second.log" 2>&1 &
+second=$!
+wait $path
+check "specula-path outlives its server's restart" test $? -eq 0
+check "it says it lost the connection and is reconnecting" grep -q "connection lost .*: reconnecting (attempt 1 of 8)" "$work/resumed.err"
+check "it says the session was resumed (Welcome.resumed from the restarted server)" grep -q "resumed the session on a new connection" "$work/resumed.err"
+kill $second 2>/dev/null; wait $second 2>/dev/null
+
 # Garbage options are refused by name before anything connects.
 tool_fails_with() {  # tool_fails_with DESCRIPTION EXPECTED-TEXT TOOL ARGS...
   local description="$1" expected="$2" tool="$3"; shift 3

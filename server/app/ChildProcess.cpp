@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,6 +39,7 @@ Result<std::unique_ptr<ChildProcess>> ChildProcess::start(std::vector<std::strin
     return Error{std::string("cannot fork: ") + std::strerror(errno)};
   }
   if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // a harness that crashes takes its instances and HAProxy with it
     sigset_t none;  // the child starts with no signal blocked, whatever the parent's threads block
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, nullptr);

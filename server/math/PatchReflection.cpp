@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace specula::math {
 
@@ -17,6 +19,22 @@ constexpr double kStartCosine = 0.9;
 // unit direction to the vertex. S is a reflection point exactly when it is parallel to the normal.
 glm::dvec3 halfVector(const glm::dvec3& s, const glm::dvec3& eye, const glm::dvec3& vertex) {
   return glm::normalize(eye - s) + glm::normalize(vertex - s);
+}
+
+// The (u, v) of `patch` nearest `point`, by Newton's method on (S − p)·Su = (S − p)·Sv = 0 from
+// `uv`, kept on the patch.
+glm::dvec2 project(const BezierPatch& patch, glm::dvec2 uv, const glm::dvec3& point) {
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const PatchSample s = patch.sample(uv.x, uv.y);
+    const glm::dvec3 d = s.position - point;
+    // Gauss-Newton: the surface's metric, without the second derivatives' small terms.
+    const glm::dmat2 metric(glm::dot(s.du, s.du), glm::dot(s.du, s.dv), glm::dot(s.du, s.dv), glm::dot(s.dv, s.dv));
+    if (!(std::abs(glm::determinant(metric)) > 1e-300)) break;
+    const glm::dvec2 step = glm::inverse(metric) * -glm::dvec2(glm::dot(d, s.du), glm::dot(d, s.dv));
+    uv = glm::clamp(uv + step, 0.0, 1.0);
+    if (glm::length(step) < 1e-12) break;
+  }
+  return uv;
 }
 
 }  // namespace
@@ -70,12 +88,31 @@ std::optional<PatchPoint> PatchReflectionSolver::refine(std::size_t patch, glm::
 std::optional<PatchPoint> PatchReflectionSolver::solveNear(const glm::dvec3& eye, const glm::dvec3& vertex,
                                                           const glm::dvec3& near) const {
   if (!finite(eye) || !finite(vertex) || !finite(near) || samples_.empty()) return std::nullopt;
-  std::size_t nearest = 0;
-  for (std::size_t i = 1; i < samples_.size(); ++i)
-    if (glm::length(samples_[i].position - near) < glm::length(samples_[nearest].position - near)) nearest = i;
+  // `near` by a seam may lie on the patch next to the one whose sample is nearest: Newton starts
+  // on each of the few nearest patches, from the (u, v) nearest `near` (its sample, then projected:
+  // two solutions a sample's spacing apart by a fold would otherwise draw it to the wrong one), and
+  // the solution nearest `near` wins.
+  constexpr std::size_t kPatchesTried = 4;
   const auto perPatch = static_cast<std::size_t>(side_ * side_);
-  const auto inPatch = static_cast<int>(nearest % perPatch);
-  return refine(nearest / perPatch, {(inPatch % side_ + 0.5) / side_, (inPatch / side_ + 0.5) / side_}, eye, vertex);
+  std::vector<std::pair<double, std::size_t>> nearestOfPatch;  // distance, sample index
+  for (std::size_t patch = 0; patch < patches_.size(); ++patch) {
+    std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), 0};
+    for (std::size_t i = patch * perPatch; i < (patch + 1) * perPatch; ++i)
+      best = std::min(best, std::pair{glm::length(samples_[i].position - near), i});
+    nearestOfPatch.push_back(best);
+  }
+  const std::size_t tried = std::min(kPatchesTried, nearestOfPatch.size());
+  std::partial_sort(nearestOfPatch.begin(), nearestOfPatch.begin() + static_cast<std::ptrdiff_t>(tried), nearestOfPatch.end());
+  std::optional<PatchPoint> found;
+  for (std::size_t k = 0; k < tried; ++k) {
+    const std::size_t sample = nearestOfPatch[k].second;
+    const auto inPatch = static_cast<int>(sample % perPatch);
+    const std::size_t patch = sample / perPatch;
+    const glm::dvec2 start = project(patches_[patch], {(inPatch % side_ + 0.5) / side_, (inPatch / side_ + 0.5) / side_}, near);
+    const auto point = refine(patch, start, eye, vertex);
+    if (point && (!found || glm::length(point->position - near) < glm::length(found->position - near))) found = point;
+  }
+  return found;
 }
 
 std::vector<PatchPoint> PatchReflectionSolver::solve(const glm::dvec3& eye, const glm::dvec3& vertex) const {

@@ -27,9 +27,10 @@ class PatchReflectionSolver {
   // Every reflection point with eye and vertex both in front of the surface there, nearest the eye
   // first; empty when the vertex has no reflection (or eye or vertex is not finite).
   std::vector<PatchPoint> solve(const glm::dvec3& eye, const glm::dvec3& vertex) const;
-  // The reflection point Newton's method reaches from the sample of the surface nearest `near` (a
-  // point on or by the surface), if it converges on that sample's patch: a solution the grid's
-  // starts can miss (two close together, or one by a patch's edge) found where another method put it.
+  // The reflection point nearest `near` (a point on or by the surface) that Newton's method reaches
+  // from `near`'s projection on each of the four patches nearest it, if any converges on its patch: a
+  // solution the grid's starts can miss (two close together, or one by a patch's edge) found where
+  // another method put it.
   std::optional<PatchPoint> solveNear(const glm::dvec3& eye, const glm::dvec3& vertex, const glm::dvec3& near) const;
   // The reflection point Newton's method reaches from (patch, uv), if it converges on that patch.
   std::optional<PatchPoint> refine(std::size_t patch, glm::dvec2 uv, const glm::dvec3& eye, const glm::dvec3& vertex) const;

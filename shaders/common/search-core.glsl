@@ -541,6 +541,8 @@ uniform mat4 patchObjectToWorld;
 #include "common/bezier-patch.glsl"
 
 const float kPatchConverged = 2e-5;  // sine between normal and bisector: a reflection point to float precision
+const float kPatchStepConverged = 1e-4;
+const float kPatchEdge = 1e-4;  // (u, v) this far past a patch's edge is still on it: float rounding  // in (u, v): Newton's next correction near a simple root
 
 // The patch's point and partial derivatives at (u, v), in world space.
 void worldPatchSample(int first, vec2 uv, out vec3 position, out vec3 du, out vec3 dv) {
@@ -576,8 +578,19 @@ int refineOnPatch(ivec2 texel, out vec3 position, out vec3 normal) {
     normal = cross(du, dv);
     if (!(dot(normal, normal) > 1e-12 * dot(du, du) * dot(dv, dv))) return 0;  // a pole
     normal = normalize(normal);
+    vec2 g = reflectionCondition(first, uv);
+    mat2 jacobian = mat2((reflectionCondition(first, uv + vec2(e, 0.0)) - reflectionCondition(first, uv - vec2(e, 0.0))) / (2.0 * e),
+                         (reflectionCondition(first, uv + vec2(0.0, e)) - reflectionCondition(first, uv - vec2(0.0, e))) / (2.0 * e));
+    if (abs(determinant(jacobian)) < 1e-20) return 0;
+    vec2 step = -inverse(jacobian) * g;
     vec3 h = normalize(normalize(eyePosition - position) + normalize(vertexWorld - position));
-    if (length(cross(h, normal)) < kPatchConverged) {
+    // A reflection point to float precision, and a simple root: by a fold of the reflection (where two
+    // reflections meet and vanish, a caustic's edge) the normal can miss the bisector by less than the
+    // tolerance at a point that is none, and there Newton's next step stays large. It must lie on
+    // the patch: the polynomial goes on past a seam, where the surface is the neighbour's.
+    bool converged = length(cross(h, normal)) < kPatchConverged && length(step) < kPatchStepConverged;
+    bool onThisPatch = all(greaterThanEqual(uv, vec2(-kPatchEdge))) && all(lessThanEqual(uv, vec2(1.0 + kPatchEdge)));
+    if (converged && onThisPatch) {
       vec3 at = gbufferCoordinateOf(position);
       if (at.z <= 0.0) return -1;
       ivec2 shown = ivec2(floor(at.xy));
@@ -592,16 +605,13 @@ int refineOnPatch(ivec2 texel, out vec3 position, out vec3 normal) {
       }
       return distance(eyePosition, seen.xyz) < distance(eyePosition, position) - 2.0 * depthStep - 1e-4 * distance(eyePosition, position) ? -1 : 1;
     }
-    vec2 g = reflectionCondition(first, uv);
-    mat2 jacobian = mat2((reflectionCondition(first, uv + vec2(e, 0.0)) - reflectionCondition(first, uv - vec2(e, 0.0))) / (2.0 * e),
-                         (reflectionCondition(first, uv + vec2(0.0, e)) - reflectionCondition(first, uv - vec2(0.0, e))) / (2.0 * e));
-    if (abs(determinant(jacobian)) < 1e-20) return 0;
-    vec2 step = -inverse(jacobian) * g;
-    if (length(step) > 0.2) step *= 0.2 / length(step);  // damped: it cannot leap across the patch
-    uv += step;
-    if (all(greaterThanEqual(uv, vec2(-0.01))) && all(lessThanEqual(uv, vec2(1.01)))) continue;
-    // Off the patch: carry on from the neighbour the G-buffer shows at the edge it left by (the
-    // G-buffer doubles as the patches' adjacency), twice at most.
+    if (!converged) {
+      if (length(step) > 0.2) step *= 0.2 / length(step);  // damped: it cannot leap across the patch
+      uv += step;
+      if (all(greaterThanEqual(uv, vec2(-0.01))) && all(lessThanEqual(uv, vec2(1.01)))) continue;
+    }
+    // Off the patch, or converged just past its edge: carry on from the neighbour the G-buffer shows
+    // at the edge it left by (the G-buffer doubles as the patches' adjacency), twice at most.
     vec3 edge, unusedU, unusedV;
     worldPatchSample(first, clamp(uv, 0.0, 1.0), edge, unusedU, unusedV);
     vec3 at = gbufferCoordinateOf(edge);

@@ -10,6 +10,7 @@ uniform int materialHasChecker;
 uniform vec3 materialCheckerOddColor;
 uniform float materialCheckerCellsPerUnit;
 uniform sampler2D materialTexture;  // gl::GpuTextures::kMaterialTextureUnit; white when the material has none
+uniform int materialHasTexture;     // 0: no texture fetch at all (an explicit-gradient fetch is dear on a CPU rasterizer)
 
 uniform vec3 sceneAmbient;
 uniform int lightCount;
@@ -23,7 +24,8 @@ vec3 surfaceColor(vec2 uv, vec2 uvDx, vec2 uvDy) {
     ivec2 cell = ivec2(floor(uv * materialCheckerCellsPerUnit));
     if (((cell.x + cell.y) & 1) != 0) color = materialCheckerOddColor;
   }
-  return color * textureGrad(materialTexture, uv, uvDx, uvDy).rgb;
+  if (materialHasTexture != 0) color *= textureGrad(materialTexture, uv, uvDx, uvDy).rgb;
+  return color;
 }
 
 // Lambertian shading of a point seen from `viewer`; faces turned away from the viewer are lit

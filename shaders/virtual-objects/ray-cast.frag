@@ -61,9 +61,12 @@ void main() {
   float path = length(surface - eyePosition) + length(hit - surface);
   gl_FragDepth = clipDepth(worldToClip, eyePosition + path * incoming);
   // The texture's footprint from the ray cone (a traced pixel has no screen derivatives).
-  mat3 toWorld = mat3(objectToWorld);
-  vec3 p0 = toWorld * attribute3(i0, 0u), p1 = toWorld * attribute3(i1, 0u), p2 = toWorld * attribute3(i2, 0u);
-  float cosine = dot(reflected, normalize(cross(p1 - p0, p2 - p0)));
-  float footprint = pixelFootprint(path, dot(incoming, viewForward), pixelAngle, cosine) * uvPerMetre(p0, p1, p2, uv0, uv1, uv2);
+  float footprint = 0.0;
+  if (materialHasTexture != 0) {
+    mat3 toWorld = mat3(objectToWorld);
+    vec3 p0 = toWorld * attribute3(i0, 0u), p1 = toWorld * attribute3(i1, 0u), p2 = toWorld * attribute3(i2, 0u);
+    float cosine = dot(reflected, normalize(cross(p1 - p0, p2 - p0)));
+    footprint = pixelFootprint(path, dot(incoming, viewForward), pixelAngle, cosine) * uvPerMetre(p0, p1, p2, uv0, uv1, uv2);
+  }
   outColor = vec4(reflectivity * shadeSurfaceOver(hit, normalToWorld * hitNormal, uv, footprint, surface), 1.0);
 }

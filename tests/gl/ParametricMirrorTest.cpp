@@ -37,9 +37,10 @@ Measured measure(const passes::ReflectionSettings& settings) {
     const auto mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame);
     measured.worstMismatch = std::max(measured.worstMismatch, mismatch.share);
   }
-  std::printf("%zu points: p50 %.4f px, p90 %.4f px, p95 %.4f px, p99 %.4f px; worst mirror mismatch %.3f %%\n",
+  std::printf("%zu points: p50 %.4f px, p90 %.4f px, p95 %.4f px, p99 %.4f px, max %.4f px; worst mirror mismatch %.3f %%\n",
               measured.points.pixels.size(), measured.points.percentile(0.5), measured.points.percentile(0.9),
-              measured.points.percentile(0.95), measured.points.percentile(0.99), 100.0 * measured.worstMismatch);
+              measured.points.percentile(0.95), measured.points.percentile(0.99), measured.points.percentile(1.0),
+              100.0 * measured.worstMismatch);
   return measured;
 }
 
@@ -54,6 +55,10 @@ TEST(ParametricMirror, SearchedTeapotMatchesTheRayTracedPatches) {
   // thin spout and handle to the exact surface, p90 was 59 px (README, Known limits).
   EXPECT_LE(measured.points.percentile(0.5), 0.01);
   EXPECT_LE(measured.points.percentile(0.99), 0.5);
+  // The worst too (measured 0.006 px): points Newton reached past a patch's edge (on its polynomial's
+  // continuation beyond a crease) or by a fold, where the normal nearly bisects at no reflection
+  // point, were taken for reflections and lay 15 px from any until the search refused them.
+  EXPECT_LE(measured.points.percentile(1.0), 0.5);
   // Measured 0.85 %, issue #19's bound 1.5 % (3.75 % while the mirror's rays met its own grid's
   // chords by their start: passes::ReflectionResources::meshBvh).
   EXPECT_LE(measured.worstMismatch, 0.015);

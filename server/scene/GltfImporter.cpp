@@ -471,7 +471,7 @@ TextureWrap wrapFrom(int mode) {
   return TextureWrap::Repeat;
 }
 
-Result<Material> materialFrom(const tinygltf::Material& source, std::size_t index, bool& chrome) {
+Result<Material> materialFrom(const tinygltf::Material& source, std::size_t index, const GltfMirrorRule& rule, bool& chrome) {
   Material material;
   material.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
   const std::string where = "material " + std::to_string(index) + ": ";
@@ -486,9 +486,12 @@ Result<Material> materialFrom(const tinygltf::Material& source, std::size_t inde
   if (!std::isfinite(metallic) || !std::isfinite(roughness) || metallic < 0.0 || metallic > 1.0 || roughness < 0.0 ||
       roughness > 1.0)
     return Error{where + "metallicFactor and roughnessFactor must lie in [0, 1]"};
-  chrome = metallic >= kGltfMirrorMetallic && roughness <= kGltfMirrorRoughness;
+  const auto named = rule.materials.find(source.name);
+  const bool forced = named != rule.materials.end();
+  chrome = forced ? named->second : metallic >= rule.minMetallic && roughness <= rule.maxRoughness;
   // A metal reflects its base colour's share of the light; the brightest channel stands for it.
-  if (chrome) material.reflectivity = static_cast<float>(metallic) * std::max({material.baseColor.x, material.baseColor.y, material.baseColor.z});
+  if (chrome)
+    material.reflectivity = static_cast<float>(forced ? 1.0 : metallic) * std::max({material.baseColor.x, material.baseColor.y, material.baseColor.z});
   material.unlit = source.extensions.count("KHR_materials_unlit") > 0;
   return material;
 }
@@ -596,6 +599,15 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
     return std::optional<std::uint32_t>(textures[key] = static_cast<std::uint32_t>(scene.textures.size() - 1));
   };
 
+  // A rule naming a material the file lacks is a typo that would silently change nothing.
+  for (const auto& [named, mirror] : choice.mirrors.materials)
+    if (std::none_of(model.materials.begin(), model.materials.end(), [&](const tinygltf::Material& m) { return m.name == named; })) {
+      std::string known;
+      for (const tinygltf::Material& m : model.materials) known += (known.empty() ? "" : ", ") + ("\"" + m.name + "\"");
+      return Error{"the mirror rule names material \"" + named + "\", which the file does not have (it has " +
+                   (known.empty() ? std::string("none") : known) + ")"};
+    }
+
   // Materials as primitives use them; -1 (none) gets glTF's default, a light grey here.
   std::map<int, std::pair<std::uint32_t, bool>> materials;  // glTF index -> scene index, chrome
   const auto materialOf = [&](int index) -> Result<std::pair<std::uint32_t, bool>> {
@@ -609,7 +621,7 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
       material.name = "default";
     } else {
       const tinygltf::Material& source = model.materials[static_cast<std::size_t>(index)];
-      Result<Material> converted = materialFrom(source, static_cast<std::size_t>(index), chrome);
+      Result<Material> converted = materialFrom(source, static_cast<std::size_t>(index), choice.mirrors, chrome);
       if (!converted) return Error{converted.error()};
       material = std::move(converted.value());
       Result<std::optional<std::uint32_t>> texture = textureOf(source.pbrMetallicRoughness.baseColorTexture, static_cast<std::size_t>(index));

@@ -3,6 +3,7 @@
 // JSON scene, or a whole glTF scene as a Specula scene.
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,11 +31,21 @@ Result<Mesh> importGltf(const std::filesystem::path& file, const GltfMeshSelecto
 // a closed mesh; its reflectivity is metallic × its base colour's brightest channel.
 inline constexpr double kGltfMirrorMetallic = 0.9, kGltfMirrorRoughness = 0.1;
 
+// Which materials are mirrors: the thresholds above, or a scene file's own (its include's
+// "mirror_rule"), and materials named one way or the other whatever their factors (a forced mirror
+// reflects as if fully metallic).
+struct GltfMirrorRule {
+  double minMetallic = kGltfMirrorMetallic;
+  double maxRoughness = kGltfMirrorRoughness;
+  std::map<std::string, bool> materials;  // glTF material name → mirror or not; every name must be in the file
+};
+
 // Which glTF scene and camera: unset, the file's default scene (else its first) and the first camera
-// met in its node tree (else a view framing the scene's bounds).
+// met in its node tree (else a view framing the scene's bounds); and which materials are mirrors.
 struct GltfSceneChoice {
   std::optional<std::size_t> scene;
   std::optional<std::size_t> camera;
+  GltfMirrorRule mirrors;
 };
 
 struct ImportedGltfScene {

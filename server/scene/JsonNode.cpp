@@ -52,6 +52,14 @@ std::string_view JsonNode::oneOf(std::initializer_list<std::string_view> keys) c
   return *chosen;
 }
 
+std::vector<std::pair<std::string, JsonNode>> JsonNode::members(std::size_t maxSize) const {
+  if (!value_->is_object()) fail("expected an object, got " + typeName());
+  if (value_->size() > maxSize) fail("object has " + std::to_string(value_->size()) + " keys; expected at most " + std::to_string(maxSize));
+  std::vector<std::pair<std::string, JsonNode>> out;
+  for (auto it = value_->begin(); it != value_->end(); ++it) out.emplace_back(it.key(), JsonNode(it.value(), path_ + keyStep(it.key())));
+  return out;
+}
+
 std::vector<JsonNode> JsonNode::array(std::size_t minSize, std::size_t maxSize) const {
   if (!value_->is_array()) fail("expected an array, got " + typeName());
   if (value_->size() < minSize || value_->size() > maxSize)

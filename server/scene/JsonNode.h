@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace specula::scene {
@@ -31,6 +32,9 @@ class JsonNode {
   JsonNode at(std::string_view key) const;                   // fails when the key is missing
   // The one key of `keys` present in this object; fails when none or several are.
   std::string_view oneOf(std::initializer_list<std::string_view> keys) const;
+
+  // An object's keys and values (at most maxSize of them), in key order.
+  std::vector<std::pair<std::string, JsonNode>> members(std::size_t maxSize) const;
 
   // An array with between minSize and maxSize elements.
   std::vector<JsonNode> array(std::size_t minSize, std::size_t maxSize) const;

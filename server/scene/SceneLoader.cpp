@@ -417,12 +417,19 @@ SceneObject readObject(const JsonNode& node, Names& names) {
   return object;
 }
 
+// {"glTF material name": true | false, ...}: mirrors whatever their factors, or not.
+std::map<std::string, bool> readMirrorMaterials(const JsonNode& node) {
+  std::map<std::string, bool> materials;
+  for (const auto& [name, mirror] : node.members(kMaxEntities)) materials[name] = mirror.boolean();
+  return materials;
+}
+
 // {"name": "engine", "file": "engine.glb", "scene": N, "translation", "rotation", "scale"}: a glTF
 // file's scene (its default, or "scene") as a group placed by the transform. Its objects are named
 // "<name>/<object>", so animations and protocol overrides can move them one by one; its materials
 // and textures come along; its cameras and lights do not (the scene file has its own).
 void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Names& names, TextureFiles& textures) {
-  node.expectObject({"name", "file", "scene", "translation", "rotation", "scale"});
+  node.expectObject({"name", "file", "scene", "mirror_rule", "translation", "rotation", "scale"});
   const JsonNode nameNode = node.at("name");
   const std::string& group = nameNode.string();
   if (group.empty() || group.find('/') != std::string::npos)
@@ -433,6 +440,13 @@ void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Na
   if (!isGltfFile(*path)) file.fail("an include is a glTF file (.gltf or .glb), got " + JsonNode::quoted(lowercaseExtension(*path)));
   GltfSceneChoice choice;
   if (const auto index = node.find("scene")) choice.scene = static_cast<std::size_t>(index->integer(0, std::numeric_limits<std::int32_t>::max()));
+  if (const auto rule = node.find("mirror_rule")) {
+    // {"metallic": at least, "roughness": at most, "materials": {"name": true | false}}
+    rule->expectObject({"metallic", "roughness", "materials"});
+    if (const auto metallic = rule->find("metallic")) choice.mirrors.minMetallic = metallic->inRange(0.0, 1.0);
+    if (const auto roughness = rule->find("roughness")) choice.mirrors.maxRoughness = roughness->inRange(0.0, 1.0);
+    if (const auto materials = rule->find("materials")) choice.mirrors.materials = readMirrorMaterials(*materials);
+  }
   Result<ImportedGltfScene> imported = importGltfScene(*path, choice);
   if (!imported) file.fail(imported.error());
   Scene& included = imported->scene;

@@ -331,9 +331,9 @@ TEST_F(Importer, GltfSceneRefusesBrokenTreesAndChoicesByName) {
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [3]}])", "scene 0 refers to node 3, but the file has 1");
   expectSceneFailure(R"([{"mesh": 0}])", R"([])", "the file holds no scene");
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no scene 2 (the file has 1; pick one of 0..0 with --gltf-scene, or \"scene\" in an include)",
-                     GltfSceneChoice{2, std::nullopt});
+                     GltfSceneChoice{2, std::nullopt, {}});
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no camera 0 (the file has 0)",
-                     GltfSceneChoice{std::nullopt, 0});
+                     GltfSceneChoice{std::nullopt, 0, {}});
   expectSceneFailure(R"([{"mesh": 0, "translation": [1, 2]}])", R"([{"nodes": [0]}])", "node 0: translation must have 3 numbers");
   expectSceneFailure(R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}])", R"([{"nodes": [0]}])", "node 0: rotation is a zero quaternion");
   expectSceneFailure(R"([{"mesh": 5}])", R"([{"nodes": [0]}])", "node 0 refers to mesh 5, but the file has 1");

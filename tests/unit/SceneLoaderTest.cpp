@@ -359,3 +359,19 @@ TEST(SceneLoader, IncludedGltfScenesAreGroupsWithNamedObjects) {
   const ScenePose pose = ScenePose::at(*scene, 0.0);
   EXPECT_FLOAT_EQ(pose.objectToWorld[1][3].x, -3.0f);
 }
+
+// An include's mirror rule: a material named off is no mirror, lower thresholds make more of them.
+TEST(SceneLoader, AnIncludesMirrorRuleOverridesTheGltfThresholds) {
+  Result<Scene> scene = loadSceneFile(fs::path(SPECULA_TEST_DATA_DIR) / "gltf" / "mirror-rule.json");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  const auto named = [&](const std::string& name) {
+    return std::find_if(scene->objects.begin(), scene->objects.end(), [&](const SceneObject& o) { return o.name == name; });
+  };
+  ASSERT_NE(named("ball/sphere"), scene->objects.end());
+  EXPECT_FALSE(named("ball/sphere")->mirror.has_value()) << "\"chrome\": false";
+  ASSERT_NE(named("engine/dipstick"), scene->objects.end());
+  EXPECT_TRUE(named("engine/dipstick")->mirror.has_value()) << "copper, metallic 0.8 and roughness 0.3, passes 0.75 / 0.3";
+  EXPECT_TRUE(named("engine/flywheel")->mirror.has_value()) << "chrome still passes";
+  EXPECT_FALSE(named("engine/block")->mirror.has_value());
+  EXPECT_EQ(scene->mirrorCount(), 10u) << "the engine's six chrome parts and its four copper ones";
+}

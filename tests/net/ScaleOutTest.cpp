@@ -56,6 +56,16 @@ bool readUntil(Viewer& viewer, const std::function<bool(const v1::ServerMessage&
   return false;
 }
 
+// The welcome of the connection the viewer's client made after losing its old one.
+std::optional<v1::Welcome> welcomeAfterReconnect(Viewer& viewer) {
+  std::optional<v1::Welcome> welcome;
+  readUntil(viewer, [&](const v1::ServerMessage& m) {
+    if (m.has_welcome()) welcome = m.welcome();
+    return m.has_welcome();
+  });
+  return welcome;
+}
+
 std::string pidOf(const std::string& instance) { return instance.substr(instance.rfind(':') + 1); }
 
 class ScaleOut : public ::testing::Test {
@@ -133,11 +143,8 @@ TEST_F(ScaleOut, SessionsSpreadEvenlyAndSurviveLosingTheirInstance) {
   for (int i = 0; i < kSessions; ++i) {
     Viewer& viewer = viewers[static_cast<std::size_t>(i)];
     if (pidOf(viewer.instance) != dead) continue;
-    std::optional<v1::Welcome> welcome;
-    ASSERT_TRUE(readUntil(viewer, [&](const v1::ServerMessage& m) {
-      if (m.has_welcome()) welcome = m.welcome();
-      return m.has_welcome();
-    })) << "viewer " << i << " came back; notices: " << (viewer.notices->empty() ? "" : viewer.notices->back());
+    const std::optional<v1::Welcome> welcome = welcomeAfterReconnect(viewer);
+    ASSERT_TRUE(welcome) << "viewer " << i << " came back; notices: " << (viewer.notices->empty() ? "" : viewer.notices->back());
     expectResumedIntact(viewer, *welcome, i);
     EXPECT_NE(pidOf(viewer.instance), dead);
     EXPECT_TRUE(readUntil(viewer, [](const v1::ServerMessage& m) { return m.has_frame(); })) << "and streams again";
@@ -171,11 +178,8 @@ TEST_F(ScaleOut, SessionsSpreadEvenlyAndSurviveLosingTheirInstance) {
   for (int i = 0; i < kSessions; ++i) {
     Viewer& viewer = viewers[static_cast<std::size_t>(i)];
     if (pidOf(viewer.instance) != draining) continue;
-    std::optional<v1::Welcome> welcome;
-    ASSERT_TRUE(readUntil(viewer, [&](const v1::ServerMessage& m) {
-      if (m.has_welcome()) welcome = m.welcome();
-      return m.has_welcome();
-    })) << "viewer " << i << " moved when instance 1 closed it";
+    const std::optional<v1::Welcome> welcome = welcomeAfterReconnect(viewer);
+    ASSERT_TRUE(welcome) << "viewer " << i << " moved when instance 1 closed it";
     expectResumedIntact(viewer, *welcome, i);
     EXPECT_EQ(pidOf(viewer.instance), std::to_string(cluster_->instancePid(2)));
     ASSERT_GT(viewer.notices->size(), noticesBefore[static_cast<std::size_t>(i)]);

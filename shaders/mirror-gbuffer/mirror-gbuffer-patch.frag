@@ -4,14 +4,16 @@
 // Bézier patch where the eye's ray through the texel meets it (Newton's method on (u, v, t) from the
 // interpolated (u, v)), so the tessellation's facets add no error. Parts as in
 // mirror-gbuffer-mesh.frag, each texel taking the part of the grid triangle (scene::parametricMesh)
-// its (u, v) falls in: the grid is what the parts were split on.
+// its (u, v) falls in: the grid is what the parts were split on. A mirror of several parts is drawn
+// once, whole, into scratch textures, every texel recording its part, and each part's layer is copied
+// from them (part-layer.frag).
 
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec2 surfaceUv;
 flat in int patchIndex;
 
-uniform int part;  // the part this layer holds; -1 when the mirror is one part
+uniform int severalParts;  // 1 when the mirror has several parts: the texel's part is recorded
 uniform int patchSegments;  // grid quads per patch side of the parametric mesh
 uniform mat4 objectToWorld;
 uniform mat4 worldToObject;
@@ -25,8 +27,8 @@ layout(std430, binding = 0) readonly buffer TriangleParts {
 #include "common/bezier-patch.glsl"
 
 layout(location = 0) out vec4 outPosition;  // w = 1 marks a mirror texel
-layout(location = 1) out vec4 outNormal;
-layout(location = 2) out vec4 outSurface;  // (u, v, patch, 1) on this part's texels
+layout(location = 1) out vec4 outNormal;   // w = the texel's part + 1
+layout(location = 2) out vec4 outSurface;  // (u, v, patch, 1)
 
 // The grid triangle of the parametric mesh at (u, v) on patch `patchIndex`: quad (i, j) holds
 // triangles (a, b, d) below its diagonal and (a, d, c) above it (math::tessellatePatchGrid).
@@ -38,14 +40,6 @@ int gridTriangle(vec2 uv) {
 }
 
 void main() {
-  // Texels of the other parts only give this layer its depth: no need to evaluate them exactly.
-  int rasterized = gridTriangle(clamp(surfaceUv, 0.0, 1.0));
-  if (part >= 0 && int((packedParts[rasterized >> 2] >> (8 * (rasterized & 3))) & 0xFFu) != part) {
-    outPosition = vec4(worldPosition, 0.0);
-    outNormal = vec4(normalize(worldNormal), 0.0);
-    outSurface = vec4(0.0);
-    return;
-  }
   int first = 16 * patchIndex;
   // The texel's eye ray in object space passes through the tessellation's point; the patch lies
   // within a fraction of a texel of it, so a few Newton steps from its (u, v) reach the exact surface.
@@ -67,8 +61,8 @@ void main() {
   // At a pole (a collapsed edge) the patch has no normal of its own; the tessellation's is its limit.
   vec3 worldN = dot(normal, normal) > 1e-8 * dot(du, du) * dot(dv, dv) ? normalToWorld * normal : worldNormal;
   int triangle = gridTriangle(uv);
-  bool inPart = part < 0 || int((packedParts[triangle >> 2] >> (8 * (triangle & 3))) & 0xFFu) == part;
-  outPosition = vec4((objectToWorld * vec4(position, 1.0)).xyz, inPart ? 1.0 : 0.0);
-  outNormal = vec4(normalize(worldN), 0.0);
-  outSurface = inPart ? vec4(uv, float(patchIndex), 1.0) : vec4(0.0);
+  int texelPart = severalParts == 0 ? 0 : int((packedParts[triangle >> 2] >> (8 * (triangle & 3))) & 0xFFu);
+  outPosition = vec4((objectToWorld * vec4(position, 1.0)).xyz, 1.0);
+  outNormal = vec4(normalize(worldN), float(texelPart + 1));
+  outSurface = vec4(uv, float(patchIndex), 1.0);
 }

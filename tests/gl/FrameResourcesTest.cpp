@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numeric>
+#include <string>
 
 #include "gl/GlContext.h"
 #include "gl/GlObject.h"
@@ -18,10 +19,15 @@ using specula::testing::Rig;
 
 TEST(FrameResources, FramesOfOneSizeCreateNoGlObjects) {
   // The kitchen: a mirror of two parts that sees itself, searched and tessellated, or (the planner's
-  // choice at this size) ray-cast against every object's hierarchy.
-  for (const passes::ReflectionSettings& settings : {specula::testing::virtualObjects(), passes::ReflectionSettings{}}) {
-    SCOPED_TRACE(settings.rayCast == passes::RayCastRule::Never ? "searched" : "planned");
-    Rig rig = makeRig("kitchen");
+  // choice at this size) ray-cast against every object's hierarchy; the Utah teapot: a parametric
+  // mirror of six parts, whose G-buffer layers are copied from scratch textures.
+  struct Case {
+    const char* scene;
+    passes::ReflectionSettings settings;
+  };
+  for (const auto& [sceneName, settings] : {Case{"kitchen", specula::testing::virtualObjects()}, Case{"kitchen", {}}, Case{"utah-teapot", {}}}) {
+    SCOPED_TRACE(std::string(sceneName) + (settings.rayCast == passes::RayCastRule::Never ? " searched" : " planned"));
+    Rig rig = makeRig(sceneName);
     ASSERT_TRUE(rig.renderer);
     const scene::Scene& scene = rig.renderer->scene();
     for (int i = 0; i < 2; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));

@@ -13,6 +13,10 @@ namespace {
 constexpr int kRectPadding = 2;  // texels around the projected bounds: rasterization and the 3×3 windows
 const GLenum kDrawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
 
+void scissorTo(const gl::GlApi& gl, const TexelRect& rect) {
+  gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
+}
+
 // The G-buffer texels a world box can cover; everything when the box reaches behind the eye.
 TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip, glm::ivec2 size) {
   const TexelRect everything{{0, 0}, size};
@@ -88,7 +92,7 @@ void MirrorGBufferPass::drawMirror(const FrameContext& frame, const PlannedMirro
   const MirrorSlots& mirror = *planned.slots;
   const glm::ivec2 size = frame.reflections.size();
   const glm::mat4 worldToClip = frame.gbufferWorldToClip();
-  gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
+  scissorTo(gl, rect);
   const glm::mat4& objectToWorld = frame.pose.objectToWorld[mirror.mirrorObject];
   const scene::MirrorInfo& info = *frame.scene.objects[mirror.mirrorObject].mirror;
   if (info.exactQuadric()) {
@@ -147,9 +151,16 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
   const auto clear = [&](const TexelRect& rect, int buffers) {
     const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
     const GLfloat farDepth = 1.0f;
-    gl.Scissor(rect.low.x, rect.low.y, rect.high.x - rect.low.x, rect.high.y - rect.low.y);
+    scissorTo(gl, rect);
     for (GLint buffer = 0; buffer < buffers; ++buffer) gl.ClearBufferfv(GL_COLOR, buffer, zero);
     gl.ClearBufferfv(GL_DEPTH, 0, &farDepth);
+  };
+  // A layer's cover this frame, and what it must clear: last frame's cover too, so no stale texel
+  // survives outside today's.
+  const auto cover = [&](int layer, const TexelRect& rect) -> const TexelRect& {
+    resources.changedRect(layer) = rect.united(resources.coveredRect(layer));
+    resources.coveredRect(layer) = rect;
+    return resources.changedRect(layer);
   };
   std::vector<bool> done(frame.plan.mirrors.size(), false);
   for (std::size_t index = 0; index < frame.plan.mirrors.size(); ++index) {
@@ -161,11 +172,9 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     gl.DepthMask(GL_TRUE);
-    // Each layer clears what it covered last frame too, so no stale texel survives outside today's cover.
     if (!parametric || mirror->partCount == 1) {
-      resources.changedRect(mirror->layer) = rect.united(resources.coveredRect(mirror->layer));
-      resources.coveredRect(mirror->layer) = rect;
-      clear(resources.changedRect(mirror->layer), attachLayer(frame, mirror->layer, parametric));
+      const TexelRect changed = cover(mirror->layer, rect);
+      clear(changed, attachLayer(frame, mirror->layer, parametric));
       if (!rect.empty()) drawMirror(frame, planned, rect);
       continue;
     }
@@ -178,26 +187,23 @@ void MirrorGBufferPass::execute(const FrameContext& frame) {
       if (part.mirrorObject != mirror->mirrorObject) continue;
       parts.push_back(other);
       done[other] = true;
-      resources.changedRect(part.layer) = rect.united(resources.coveredRect(part.layer));
-      resources.coveredRect(part.layer) = rect;
-      changedByAny = changedByAny.united(resources.changedRect(part.layer));
+      changedByAny = changedByAny.united(cover(part.layer, rect));
     }
     clear(changedByAny, attachScratch(frame));
     if (!rect.empty()) drawMirror(frame, planned, rect);
     // Each part's layer copied from the scratch textures, which are no longer attached.
     gl.Disable(GL_DEPTH_TEST);
     partLayer_.use();
-    for (std::size_t unit = 0; unit < 3; ++unit) {
-      gl.ActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-      const gl::GlTexture& texture = unit == 0 ? scratch_->position : unit == 1 ? scratch_->normal : scratch_->surface;
-      gl.BindTexture(GL_TEXTURE_2D, texture.id());
+    const GLuint drawn[] = {scratch_->position.id(), scratch_->normal.id(), scratch_->surface.id()};
+    for (GLenum unit = 0; unit < 3; ++unit) {
+      gl.ActiveTexture(GL_TEXTURE0 + unit);
+      gl.BindTexture(GL_TEXTURE_2D, drawn[unit]);
     }
     gl.BindVertexArray(emptyVertexArray_.id());
     for (const std::size_t partIndex : parts) {
       const MirrorSlots& part = *frame.plan.mirrors[partIndex].slots;
       attachLayer(frame, part.layer, true);
-      const TexelRect& changed = resources.changedRect(part.layer);
-      gl.Scissor(changed.low.x, changed.low.y, changed.high.x - changed.low.x, changed.high.y - changed.low.y);
+      scissorTo(gl, resources.changedRect(part.layer));
       partLayer_.set("part", part.part);
       gl.DrawArrays(GL_TRIANGLES, 0, 3);
     }

@@ -540,9 +540,13 @@ uniform mat4 patchObjectToWorld;
 #define PATCH_POINTS_BINDING 11
 #include "common/bezier-patch.glsl"
 
-const float kPatchConverged = 2e-5;  // sine between normal and bisector: a reflection point to float precision
-const float kPatchStepConverged = 1e-4;
-const float kPatchEdge = 1e-4;  // (u, v) this far past a patch's edge is still on it: float rounding  // in (u, v): Newton's next correction near a simple root
+const float kPatchConverged = 2e-5;      // sine between normal and bisector: a reflection point to float precision
+const float kPatchStepConverged = 1e-4;  // in (u, v): Newton's next correction near a simple root
+// A root this far past a patch's edge in (u, v) is still on it: float rounding. One further out lies
+// on the patch's polynomial continued past the edge, not on the surface: by a crease (the teapot's
+// lid seam turns its normal by 0.2°) both patches' continuations have a root just past the seam and
+// the surface has none there. 1e-4 took such a root for a reflection, 179 px from any.
+const float kPatchEdge = 2e-6;
 
 // The patch's point and partial derivatives at (u, v), in world space.
 void worldPatchSample(int first, vec2 uv, out vec3 position, out vec3 du, out vec3 dv) {
@@ -559,6 +563,29 @@ vec2 reflectionCondition(int first, vec2 uv) {
   worldPatchSample(first, uv, p, du, dv);
   vec3 h = normalize(eyePosition - p) + normalize(vertexWorld - p);
   return vec2(dot(h, du), dot(h, dv));
+}
+
+// The G-buffer's (u, v, patch) of the patch other than `first` nearest `edge` (a point on the edge
+// of `first`) among the texel it lands on and that texel's eight neighbours: the seam may run through
+// the texel, which then shows `first` itself. w ≤ 0 when none shows another patch.
+vec4 surfaceAcross(vec3 edge, int first) {
+  vec3 at = gbufferCoordinateOf(edge);
+  vec4 across = vec4(0.0);
+  if (at.z <= 0.0) return across;
+  ivec2 centre = ivec2(floor(at.xy));
+  float nearest = 1e30;
+  for (int k = 0; k < 9; ++k) {
+    ivec2 texel = centre + ivec2(k % 3 - 1, k / 3 - 1);
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, textureSize(gbufferSurface, 0).xy))) continue;
+    vec4 surface = texelFetch(gbufferSurface, ivec3(texel, layer), 0);
+    if (surface.w <= 0.0 || 16 * int(surface.z + 0.5) == first) continue;
+    float away = distance(texelFetch(gbufferPosition, ivec3(texel, layer), 0).xyz, edge);
+    if (away < nearest) {
+      nearest = away;
+      across = surface;
+    }
+  }
+  return across;
 }
 
 // Newton's method on the exact patch from the G-buffer's (u, v) at `texel`. 1: converged on that
@@ -589,7 +616,8 @@ int refineOnPatch(ivec2 texel, out vec3 position, out vec3 normal) {
     // tolerance at a point that is none, and there Newton's next step stays large. It must lie on
     // the patch: the polynomial goes on past a seam, where the surface is the neighbour's.
     bool converged = length(cross(h, normal)) < kPatchConverged && length(step) < kPatchStepConverged;
-    bool onThisPatch = all(greaterThanEqual(uv, vec2(-kPatchEdge))) && all(lessThanEqual(uv, vec2(1.0 + kPatchEdge)));
+    vec2 root = uv + step;  // Newton's estimate of the root, closer than uv by the step still to go
+    bool onThisPatch = all(greaterThanEqual(root, vec2(-kPatchEdge))) && all(lessThanEqual(root, vec2(1.0 + kPatchEdge)));
     if (converged && onThisPatch) {
       vec3 at = gbufferCoordinateOf(position);
       if (at.z <= 0.0) return -1;
@@ -614,10 +642,9 @@ int refineOnPatch(ivec2 texel, out vec3 position, out vec3 normal) {
     // at the edge it left by (the G-buffer doubles as the patches' adjacency), twice at most.
     vec3 edge, unusedU, unusedV;
     worldPatchSample(first, clamp(uv, 0.0, 1.0), edge, unusedU, unusedV);
-    vec3 at = gbufferCoordinateOf(edge);
-    if (at.z <= 0.0 || ++crossings > 2) return 0;
-    vec4 next = texelFetch(gbufferSurface, ivec3(ivec2(floor(at.xy)), layer), 0);
-    if (next.w <= 0.0 || 16 * int(next.z + 0.5) == first) return 0;
+    if (++crossings > 2) return 0;
+    vec4 next = surfaceAcross(edge, first);
+    if (next.w <= 0.0) return 0;
     first = 16 * int(next.z + 0.5);
     uv = next.xy;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "math/ExtrusionReflection.h"
 #include "math/PatchReflection.h"
 #include "math/SphereReflection.h"
+#include "reference/PatchSurface.h"
 
 namespace specula::bench {
 
@@ -25,10 +27,67 @@ bool hasExactShape(const scene::SceneObject& object, const scene::Scene& scene) 
          (object.mirror && !scene.meshes[object.mesh].patches.empty());
 }
 
-// The exact answer for one mirror in world space: its analytic sphere, its declared extrusion or its
-// Bézier patches.
+// One part of a parametric mirror in world space: the solver over the patches the part covers, and
+// what decides whether a solution counts for the part: it lies in the part (the grid triangle its
+// (u, v) falls in, as the G-buffer assigns texels) and, for a vertex the search hid, the eye sees it
+// past the whole mirror (the part's layer shows only texels no other part covers). Without these a
+// vertex rightly hidden in one part was counted as missed for its reflection in another, or behind
+// the spout. A point the search calls visible is judged by where it lies, not by whether it is
+// seen: by an occluding edge the texel's ray and the exact point can disagree within a pixel.
+struct PatchPart {
+  std::shared_ptr<const math::PatchReflectionSolver> solver;
+  std::vector<std::size_t> meshPatch;  // the mesh's patch of each of the solver's
+  const std::vector<std::uint8_t>* triangleParts = nullptr;  // null: one part, every solution counts
+  int part = 0, segments = 1;
+  std::shared_ptr<const reference::PatchSurface> surface;  // the whole mirror, world space
+
+  bool counts(const glm::dvec3& eye, const math::PatchPoint& point, bool mustBeSeen) const {
+    return inPart(point) && !(mustBeSeen && occluded(eye, point.position));
+  }
+
+ private:
+  bool inPart(const math::PatchPoint& point) const {
+    if (!triangleParts) return true;
+    const glm::dvec2 cell = point.uv * static_cast<double>(segments);
+    const glm::ivec2 quad = glm::clamp(glm::ivec2(glm::floor(cell)), glm::ivec2(0), glm::ivec2(segments - 1));
+    const glm::dvec2 inQuad = cell - glm::dvec2(quad);
+    const std::size_t triangle =
+        2 * (meshPatch[point.patch] * static_cast<std::size_t>(segments * segments) + static_cast<std::size_t>(quad.y * segments + quad.x)) +
+        (inQuad.x < inQuad.y ? 1 : 0);  // math::tessellatePatchGrid's two triangles of a quad
+    return triangle < triangleParts->size() && (*triangleParts)[triangle] == part;
+  }
+
+  // Whether the mirror meets the eye's ray to `point` before it. Not within a margin of it: a ray
+  // grazing the surface at `point` meets it there as a double root, which Newton's method places
+  // only to the square root of its tolerance along the ray.
+  bool occluded(const glm::dvec3& eye, const glm::dvec3& point) const {
+    const glm::dvec3 direction = point - eye;
+    const double tMax = 1.0 - 100.0 * surface->selfHitDistance() / glm::length(direction);
+    for (std::size_t piece = 0; piece < surface->pieceCount(); ++piece) {
+      if (!rayMeetsBox(eye, direction, surface->pieceBounds(piece), tMax)) continue;
+      if (surface->intersectPiece(piece, eye, direction, 0.0, tMax)) return true;
+    }
+    return false;
+  }
+
+  static bool rayMeetsBox(const glm::dvec3& origin, const glm::dvec3& direction, const std::pair<glm::dvec3, glm::dvec3>& box,
+                          double tMax) {
+    double enter = 0.0, leave = tMax;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double inverse = 1.0 / direction[axis];
+      double t0 = (box.first[axis] - origin[axis]) * inverse, t1 = (box.second[axis] - origin[axis]) * inverse;
+      if (t0 > t1) std::swap(t0, t1);
+      enter = std::max(enter, t0);
+      leave = std::min(leave, t1);
+    }
+    return enter <= leave;
+  }
+};
+
+// The exact answer for one mirror (part) in world space: its analytic sphere, its declared extrusion
+// or its Bézier patches.
 struct ExactMirror {
-  std::variant<math::Sphere, math::Extrusion, std::shared_ptr<const math::PatchReflectionSolver>> shape;
+  std::variant<math::Sphere, math::Extrusion, PatchPart> shape;
   // An extrusion is unbounded; the mirror spans these heights along it (its mesh's): a reflection
   // point beyond them lies on no mirror, so whatever the search made of it is not judged.
   glm::dvec2 heights{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
@@ -45,14 +104,16 @@ struct ExactMirror {
     return glm::length(glm::dvec2(glm::dot(offset, extrusion.u), glm::dot(offset, extrusion.v)) / extrusion.radii) <= kOnSurface;
   }
 
-  // A surface of patches may reflect a vertex at several points: the one nearest `searched` is judged.
-  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex,
-                                               const glm::dvec3& searched) const {
-    if (const auto* solver = std::get_if<std::shared_ptr<const math::PatchReflectionSolver>>(&shape)) {
-      std::vector<math::PatchPoint> points = (*solver)->solve(eye, vertex);
+  // A surface of patches may reflect a vertex at several points: the one nearest `searched` of those
+  // in the part (and seen, when `mustBeSeen`) is judged.
+  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex, const glm::dvec3& searched,
+                                               bool mustBeSeen) const {
+    if (const auto* patches = std::get_if<PatchPart>(&shape)) {
+      std::vector<math::PatchPoint> points = patches->solver->solve(eye, vertex);
       // Newton's method in double precision from by the searched point finds a solution there if
       // there is one, even one the grid's starts missed; the search's own answer is not trusted.
-      if (const auto local = (*solver)->solveNear(eye, vertex, searched)) points.push_back(*local);
+      if (const auto local = patches->solver->solveNear(eye, vertex, searched)) points.push_back(*local);
+      std::erase_if(points, [&](const math::PatchPoint& point) { return !patches->counts(eye, point, mustBeSeen); });
       if (points.empty()) return std::nullopt;
       const auto nearest = std::min_element(points.begin(), points.end(), [&](const auto& a, const auto& b) {
         return glm::length(a.position - searched) < glm::length(b.position - searched);
@@ -75,13 +136,34 @@ struct ExactMirror {
   }
 };
 
+// Part `part` of a parametric mirror whose parts were split on `parts` (null: one part).
+PatchPart patchPart(const scene::Mesh& mesh, const glm::mat4& objectToWorld, const scene::MirrorParts* parts, int part,
+                    std::shared_ptr<const reference::PatchSurface> surface) {
+  PatchPart result;
+  const bool split = parts && parts->parts.size() > 1 && parts->triangleParts.size() == mesh.triangleCount();
+  if (split) {
+    result.triangleParts = &parts->triangleParts;
+    result.part = part;
+    result.segments = mesh.patchSegments;
+  }
+  const auto trianglesPerPatch = static_cast<std::ptrdiff_t>(2 * mesh.patchSegments * mesh.patchSegments);
+  const auto coversPatch = [&](std::size_t patch) {
+    const auto first = parts->triangleParts.begin() + static_cast<std::ptrdiff_t>(patch) * trianglesPerPatch;
+    return std::find(first, first + trianglesPerPatch, part) != first + trianglesPerPatch;
+  };
+  std::vector<math::BezierPatch> world;
+  for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+    if (split && !coversPatch(p)) continue;
+    world.push_back(mesh.patches[p].transformed(glm::dmat4(objectToWorld)));
+    result.meshPatch.push_back(p);
+  }
+  result.solver = std::make_shared<const math::PatchReflectionSolver>(std::move(world));
+  result.surface = std::move(surface);
+  return result;
+}
+
 // The mirror's exact shape in world space; nullopt when its transform does not keep a sphere one.
 std::optional<ExactMirror> worldShape(const scene::MirrorInfo& mirror, const scene::Mesh& mesh, const glm::mat4& objectToWorld) {
-  if (!mesh.patches.empty()) {
-    std::vector<math::BezierPatch> world;
-    for (const math::BezierPatch& patch : mesh.patches) world.push_back(patch.transformed(glm::dmat4(objectToWorld)));
-    return ExactMirror{std::make_shared<const math::PatchReflectionSolver>(std::move(world))};
-  }
   if (mirror.extrusion) {
     const auto extrusion = mirror.extrusion->transformed(glm::dmat4(objectToWorld));
     if (!extrusion) return std::nullopt;
@@ -133,9 +215,9 @@ namespace {
 void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const ExactMirror& mirror, const glm::dvec3& eye,
            const glm::dvec3& vertex, const glm::vec3& reflectionPoint, int flags, std::size_t slot, double marginPixels) {
   if (mirror.encloses(vertex)) return;
-  const std::optional<math::SurfacePoint> solved = mirror.reflection(eye, vertex, glm::dvec3(reflectionPoint));
-  const std::optional<glm::dvec3> exact = solved ? std::optional(solved->position) : std::nullopt;
   const bool searchVisible = (flags & (passes::ReflectedVertex::kHidden | passes::ReflectedVertex::kUnsolved)) == 0;
+  const std::optional<math::SurfacePoint> solved = mirror.reflection(eye, vertex, glm::dvec3(reflectionPoint), !searchVisible);
+  const std::optional<glm::dvec3> exact = solved ? std::optional(solved->position) : std::nullopt;
   if (!exact) {
     errors.exactHiddenButSearchVisible += searchVisible;
     return;
@@ -157,15 +239,44 @@ void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, co
   errors.vertices.push_back({slot, exactPixel, offset});
 }
 
-// The world shape of a mirror drawn this frame with an analytic sphere or an extrusion; nullopt otherwise.
-std::optional<ExactMirror> measuredShape(const scene::Scene& scene, const scene::ScenePose& pose,
-                                           const render::RenderedFrame& frame, std::size_t mirror) {
-  // Mirrors not drawn this frame still hold an older frame's results.
-  if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror) == frame.drawnMirrors.end()) return std::nullopt;
-  const scene::SceneObject& mirrorObject = scene.objects[mirror];
-  if (!hasExactShape(mirrorObject, scene)) return std::nullopt;
-  return worldShape(*mirrorObject.mirror, scene.meshes[mirrorObject.mesh], pose.objectToWorld[mirror]);
-}
+// The exact shapes of the mirror parts drawn this frame, each made once: a parametric mirror's parts
+// share its whole surface (for occlusion).
+class ExactShapes {
+ public:
+  ExactShapes(const render::Renderer& renderer, const scene::ScenePose& pose, const render::RenderedFrame& frame)
+      : renderer_(renderer), pose_(pose), frame_(frame) {}
+
+  // The world shape of part `part` of `mirror` when it was drawn this frame with an analytic
+  // sphere, an extrusion or patches; null otherwise.
+  const ExactMirror* of(std::size_t mirror, int part) {
+    const auto [at, made] = shapes_.try_emplace(std::pair{mirror, part});
+    if (made) at->second = make(mirror, part);
+    return at->second ? &*at->second : nullptr;
+  }
+
+ private:
+  std::optional<ExactMirror> make(std::size_t mirror, int part) {
+    // Mirrors not drawn this frame still hold an older frame's results.
+    if (std::find(frame_.drawnMirrors.begin(), frame_.drawnMirrors.end(), mirror) == frame_.drawnMirrors.end()) return std::nullopt;
+    const scene::Scene& scene = renderer_.scene();
+    const scene::SceneObject& object = scene.objects[mirror];
+    if (!hasExactShape(object, scene)) return std::nullopt;
+    const scene::Mesh& mesh = scene.meshes[object.mesh];
+    const glm::mat4& objectToWorld = pose_.objectToWorld[mirror];
+    if (mesh.patches.empty()) return worldShape(*object.mirror, mesh, objectToWorld);
+    auto& surface = surfaces_[mirror];
+    if (!surface) surface = std::make_shared<const reference::PatchSurface>(mesh.patches, objectToWorld);
+    const auto& parts = renderer_.reflectionSlots().parts;
+    const auto split = parts.find(mirror);
+    return ExactMirror{patchPart(mesh, objectToWorld, split == parts.end() ? nullptr : &split->second, part, surface)};
+  }
+
+  const render::Renderer& renderer_;
+  const scene::ScenePose& pose_;
+  const render::RenderedFrame& frame_;
+  std::map<std::pair<std::size_t, int>, std::optional<ExactMirror>> shapes_;
+  std::map<std::size_t, std::shared_ptr<const reference::PatchSurface>> surfaces_;
+};
 
 }  // namespace
 
@@ -175,10 +286,11 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
   const std::vector<passes::ReflectedVertex> results = renderer.readReflectedVertices();
   const scene::Scene& scene = renderer.scene();
   const glm::dvec3 eye(pose.camera.eye);
+  ExactShapes shapes(renderer, pose, frame);
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
-    const auto shape = measuredShape(scene, pose, frame, mirror.mirrorObject);
+    const ExactMirror* shape = shapes.of(mirror.mirrorObject, mirror.part);
     if (!shape) continue;
-    const bool patches = std::holds_alternative<std::shared_ptr<const math::PatchReflectionSolver>>(shape->shape);
+    const bool patches = std::holds_alternative<PatchPart>(shape->shape);
     for (const passes::ReflectionSlotRange& range : mirror.reflected) {
       // A vertex on the patches themselves is its own reflection point: nothing to judge.
       if (patches && range.object == mirror.mirrorObject) continue;
@@ -199,8 +311,9 @@ ReflectionPointErrors measureTessellatedPoints(const render::Renderer& renderer,
   ReflectionPointErrors errors;
   const glm::dvec3 eye(pose.camera.eye);
   const std::vector<passes::FinishedVertex> finished = renderer.readTessellatedVertices();
+  ExactShapes shapes(renderer, pose, frame);
   for (std::size_t i = 0; i < finished.size(); ++i) {
-    const auto shape = measuredShape(renderer.scene(), pose, frame, finished[i].mirrorObject);
+    const ExactMirror* shape = shapes.of(finished[i].mirrorObject, finished[i].part);
     if (!shape) continue;
     const passes::TessellatedVertex& record = finished[i].record;
     judge(errors, frame, *shape, eye, glm::dvec3(record.positionU), glm::vec3(record.reflectionTexelX),

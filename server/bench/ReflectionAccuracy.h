@@ -1,6 +1,6 @@
 #pragma once
-// The search's reflection points against the exact solvers (server/math: spheres and extrusions), in
-// screen pixels.
+// The search's reflection points against the exact solvers (server/math: spheres, extrusions and
+// Bézier patches), in screen pixels.
 #include <cstddef>
 #include <vector>
 
@@ -41,8 +41,9 @@ struct ReflectionPointErrors {
 };
 
 // Compares the last frame's search results (a GPU readback) with the exact reflection point on
-// every mirror with an exact shape (an analytic sphere or a declared extrusion), for every vertex
-// whose exact reflection point lies inside the frame (plus `marginPixels`). Other mirrors are skipped.
+// every mirror with an exact shape (an analytic sphere, a declared extrusion or Bézier patches; each
+// part of a parametric mirror against its own patches), for every vertex whose exact reflection
+// point lies inside the frame (plus `marginPixels`). Other mirrors are skipped.
 ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, const scene::ScenePose& pose,
                                               const render::RenderedFrame& frame, double marginPixels = 0.0);
 

@@ -106,7 +106,7 @@ std::vector<FinishedVertex> TessellationBuffers::readFinished() const {
   for (const TessellatedRange& range : ranges_) {
     if (range.fromMesh) continue;
     for (GLsizei k = 0; k < 3 * range.triangles; ++k)
-      vertices.push_back({range.mirror->mirrorObject, records[static_cast<std::size_t>(3 * range.firstTriangle + k)]});
+      vertices.push_back({range.mirror->mirrorObject, range.mirror->part, records[static_cast<std::size_t>(3 * range.firstTriangle + k)]});
   }
   return vertices;
 }

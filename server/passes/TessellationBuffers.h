@@ -38,6 +38,7 @@ static_assert(sizeof(TessellatedVertex) == 80, "must match tessellated-vertex.gl
 // A finished vertex and the mirror it was reflected in (what tests measure against exact answers).
 struct FinishedVertex {
   std::size_t mirrorObject = 0;
+  int part = 0;  // of the mirror (MirrorSlots::part)
   TessellatedVertex record;
 };
 

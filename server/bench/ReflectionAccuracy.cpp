@@ -27,22 +27,22 @@ bool hasExactShape(const scene::SceneObject& object, const scene::Scene& scene) 
          (object.mirror && !scene.meshes[object.mesh].patches.empty());
 }
 
-// One part of a parametric mirror in world space: the solver over the patches the part covers, and
-// what decides whether a solution counts for the part: it lies in the part (the grid triangle its
-// (u, v) falls in, as the G-buffer assigns texels) and, for a vertex the search hid, the eye sees it
-// past the whole mirror (the part's layer shows only texels no other part covers). Without these a
-// vertex rightly hidden in one part was counted as missed for its reflection in another, or behind
-// the spout. A point the search calls visible is judged by where it lies, not by whether it is
-// seen: by an occluding edge the texel's ray and the exact point can disagree within a pixel.
+// One part of a parametric mirror in world space: the whole mirror's solver and surface, and what
+// decides whether a solution counts. For a vertex the search hid, only a reflection the part shows:
+// one that lies in the part (the grid triangle its (u, v) falls in, as the G-buffer assigns texels)
+// and that the eye sees past the whole mirror (the part's layer shows only texels no other part
+// covers). Judged against every reflection instead, a vertex rightly hidden in one part was counted
+// as missed for its reflection in another, or behind the spout. A point the search calls visible is
+// judged by where it lies, against all of them: at an occluding edge or a boundary between parts
+// the texel it was accepted by and the exact point can disagree within a pixel.
 struct PatchPart {
-  std::shared_ptr<const math::PatchReflectionSolver> solver;
-  std::vector<std::size_t> meshPatch;  // the mesh's patch of each of the solver's
-  const std::vector<std::uint8_t>* triangleParts = nullptr;  // null: one part, every solution counts
+  std::shared_ptr<const math::PatchReflectionSolver> solver;  // the whole mirror, world space
+  std::shared_ptr<const reference::PatchSurface> surface;     // the same, for occlusion
+  const std::vector<std::uint8_t>* triangleParts = nullptr;  // null: one part
   int part = 0, segments = 1;
-  std::shared_ptr<const reference::PatchSurface> surface;  // the whole mirror, world space
 
-  bool counts(const glm::dvec3& eye, const math::PatchPoint& point, bool mustBeSeen) const {
-    return inPart(point) && !(mustBeSeen && occluded(eye, point.position));
+  bool counts(const glm::dvec3& eye, const math::PatchPoint& point, bool searchHid) const {
+    return !searchHid || (inPart(point) && !occluded(eye, point.position));
   }
 
  private:
@@ -52,7 +52,7 @@ struct PatchPart {
     const glm::ivec2 quad = glm::clamp(glm::ivec2(glm::floor(cell)), glm::ivec2(0), glm::ivec2(segments - 1));
     const glm::dvec2 inQuad = cell - glm::dvec2(quad);
     const std::size_t triangle =
-        2 * (meshPatch[point.patch] * static_cast<std::size_t>(segments * segments) + static_cast<std::size_t>(quad.y * segments + quad.x)) +
+        2 * (point.patch * static_cast<std::size_t>(segments * segments) + static_cast<std::size_t>(quad.y * segments + quad.x)) +
         (inQuad.x < inQuad.y ? 1 : 0);  // math::tessellatePatchGrid's two triangles of a quad
     return triangle < triangleParts->size() && (*triangleParts)[triangle] == part;
   }
@@ -105,15 +105,15 @@ struct ExactMirror {
   }
 
   // A surface of patches may reflect a vertex at several points: the one nearest `searched` of those
-  // in the part (and seen, when `mustBeSeen`) is judged.
+  // that count (PatchPart) is judged.
   std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex, const glm::dvec3& searched,
-                                               bool mustBeSeen) const {
+                                               bool searchHid) const {
     if (const auto* patches = std::get_if<PatchPart>(&shape)) {
       std::vector<math::PatchPoint> points = patches->solver->solve(eye, vertex);
       // Newton's method in double precision from by the searched point finds a solution there if
       // there is one, even one the grid's starts missed; the search's own answer is not trusted.
       if (const auto local = patches->solver->solveNear(eye, vertex, searched)) points.push_back(*local);
-      std::erase_if(points, [&](const math::PatchPoint& point) { return !patches->counts(eye, point, mustBeSeen); });
+      std::erase_if(points, [&](const math::PatchPoint& point) { return !patches->counts(eye, point, searchHid); });
       if (points.empty()) return std::nullopt;
       const auto nearest = std::min_element(points.begin(), points.end(), [&](const auto& a, const auto& b) {
         return glm::length(a.position - searched) < glm::length(b.position - searched);
@@ -135,32 +135,6 @@ struct ExactMirror {
     return height < heights.x || height > heights.y;
   }
 };
-
-// Part `part` of a parametric mirror whose parts were split on `parts` (null: one part).
-PatchPart patchPart(const scene::Mesh& mesh, const glm::mat4& objectToWorld, const scene::MirrorParts* parts, int part,
-                    std::shared_ptr<const reference::PatchSurface> surface) {
-  PatchPart result;
-  const bool split = parts && parts->parts.size() > 1 && parts->triangleParts.size() == mesh.triangleCount();
-  if (split) {
-    result.triangleParts = &parts->triangleParts;
-    result.part = part;
-    result.segments = mesh.patchSegments;
-  }
-  const auto trianglesPerPatch = static_cast<std::ptrdiff_t>(2 * mesh.patchSegments * mesh.patchSegments);
-  const auto coversPatch = [&](std::size_t patch) {
-    const auto first = parts->triangleParts.begin() + static_cast<std::ptrdiff_t>(patch) * trianglesPerPatch;
-    return std::find(first, first + trianglesPerPatch, part) != first + trianglesPerPatch;
-  };
-  std::vector<math::BezierPatch> world;
-  for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
-    if (split && !coversPatch(p)) continue;
-    world.push_back(mesh.patches[p].transformed(glm::dmat4(objectToWorld)));
-    result.meshPatch.push_back(p);
-  }
-  result.solver = std::make_shared<const math::PatchReflectionSolver>(std::move(world));
-  result.surface = std::move(surface);
-  return result;
-}
 
 // The mirror's exact shape in world space; nullopt when its transform does not keep a sphere one.
 std::optional<ExactMirror> worldShape(const scene::MirrorInfo& mirror, const scene::Mesh& mesh, const glm::mat4& objectToWorld) {
@@ -264,18 +238,29 @@ class ExactShapes {
     const scene::Mesh& mesh = scene.meshes[object.mesh];
     const glm::mat4& objectToWorld = pose_.objectToWorld[mirror];
     if (mesh.patches.empty()) return worldShape(*object.mirror, mesh, objectToWorld);
-    auto& surface = surfaces_[mirror];
-    if (!surface) surface = std::make_shared<const reference::PatchSurface>(mesh.patches, objectToWorld);
+    PatchPart patches = wholeSurfaces_[mirror];
+    if (!patches.solver) {
+      std::vector<math::BezierPatch> world;
+      for (const math::BezierPatch& patch : mesh.patches) world.push_back(patch.transformed(glm::dmat4(objectToWorld)));
+      patches.solver = std::make_shared<const math::PatchReflectionSolver>(std::move(world));
+      patches.surface = std::make_shared<const reference::PatchSurface>(mesh.patches, objectToWorld);
+      wholeSurfaces_[mirror] = patches;
+    }
     const auto& parts = renderer_.reflectionSlots().parts;
     const auto split = parts.find(mirror);
-    return ExactMirror{patchPart(mesh, objectToWorld, split == parts.end() ? nullptr : &split->second, part, surface)};
+    if (split != parts.end() && split->second.parts.size() > 1 && split->second.triangleParts.size() == mesh.triangleCount()) {
+      patches.triangleParts = &split->second.triangleParts;
+      patches.part = part;
+      patches.segments = mesh.patchSegments;
+    }
+    return ExactMirror{patches};
   }
 
   const render::Renderer& renderer_;
   const scene::ScenePose& pose_;
   const render::RenderedFrame& frame_;
   std::map<std::pair<std::size_t, int>, std::optional<ExactMirror>> shapes_;
-  std::map<std::size_t, std::shared_ptr<const reference::PatchSurface>> surfaces_;
+  std::map<std::size_t, PatchPart> wholeSurfaces_;  // a parametric mirror's solver and surface, for all its parts
 };
 
 }  // namespace

@@ -48,12 +48,7 @@ struct PatchPart {
  private:
   bool inPart(const math::PatchPoint& point) const {
     if (!triangleParts) return true;
-    const glm::dvec2 cell = point.uv * static_cast<double>(segments);
-    const glm::ivec2 quad = glm::clamp(glm::ivec2(glm::floor(cell)), glm::ivec2(0), glm::ivec2(segments - 1));
-    const glm::dvec2 inQuad = cell - glm::dvec2(quad);
-    const std::size_t triangle =
-        2 * (point.patch * static_cast<std::size_t>(segments * segments) + static_cast<std::size_t>(quad.y * segments + quad.x)) +
-        (inQuad.x < inQuad.y ? 1 : 0);  // math::tessellatePatchGrid's two triangles of a quad
+    const std::size_t triangle = math::patchGridTriangle(point.patch, point.uv, segments);
     return triangle < triangleParts->size() && (*triangleParts)[triangle] == part;
   }
 
@@ -62,25 +57,7 @@ struct PatchPart {
   // only to the square root of its tolerance along the ray.
   bool occluded(const glm::dvec3& eye, const glm::dvec3& point) const {
     const glm::dvec3 direction = point - eye;
-    const double tMax = 1.0 - 100.0 * surface->selfHitDistance() / glm::length(direction);
-    for (std::size_t piece = 0; piece < surface->pieceCount(); ++piece) {
-      if (!rayMeetsBox(eye, direction, surface->pieceBounds(piece), tMax)) continue;
-      if (surface->intersectPiece(piece, eye, direction, 0.0, tMax)) return true;
-    }
-    return false;
-  }
-
-  static bool rayMeetsBox(const glm::dvec3& origin, const glm::dvec3& direction, const std::pair<glm::dvec3, glm::dvec3>& box,
-                          double tMax) {
-    double enter = 0.0, leave = tMax;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double inverse = 1.0 / direction[axis];
-      double t0 = (box.first[axis] - origin[axis]) * inverse, t1 = (box.second[axis] - origin[axis]) * inverse;
-      if (t0 > t1) std::swap(t0, t1);
-      enter = std::max(enter, t0);
-      leave = std::min(leave, t1);
-    }
-    return enter <= leave;
+    return surface->meetsBefore(eye, direction, 1.0 - 100.0 * surface->selfHitDistance() / glm::length(direction));
   }
 };
 

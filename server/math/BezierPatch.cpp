@@ -141,6 +141,15 @@ std::optional<PatchRayHit> intersectPatch(const BezierPatch& patch, const glm::d
   return nearest;
 }
 
+std::size_t patchGridTriangle(std::size_t patch, const glm::dvec2& uv, int segments) {
+  const glm::dvec2 cell = uv * static_cast<double>(segments);
+  const glm::ivec2 quad = glm::clamp(glm::ivec2(glm::floor(cell)), glm::ivec2(0), glm::ivec2(segments - 1));
+  const glm::dvec2 inQuad = cell - glm::dvec2(quad);
+  const auto quads = static_cast<std::size_t>(segments) * static_cast<std::size_t>(segments);
+  // Quad (i, j) holds (a, b, d) below its diagonal and (a, d, c) above it (tessellatePatchGrid).
+  return 2 * (patch * quads + static_cast<std::size_t>(quad.y * segments + quad.x)) + (inQuad.x < inQuad.y ? 1 : 0);
+}
+
 PatchGrid tessellatePatchGrid(const std::vector<BezierPatch>& patches, int segments) {
   PatchGrid grid;
   const auto side = static_cast<std::uint32_t>(segments + 1);

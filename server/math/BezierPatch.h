@@ -53,5 +53,8 @@ struct PatchGrid {
   std::vector<std::uint32_t> indices;
 };
 PatchGrid tessellatePatchGrid(const std::vector<BezierPatch>& patches, int segments);
+// The triangle of that layout that (u, v) on patch `patch` falls in (mirror-gbuffer-patch.frag's
+// gridTriangle is its GLSL twin).
+std::size_t patchGridTriangle(std::size_t patch, const glm::dvec2& uv, int segments);
 
 }  // namespace specula::math

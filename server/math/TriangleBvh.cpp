@@ -4,6 +4,8 @@
 #include <limits>
 #include <numeric>
 
+#include "math/RayBox.h"
+
 namespace specula::math {
 
 namespace {
@@ -53,12 +55,6 @@ struct Builder {
   }
 };
 
-bool hitsBox(const TriangleBvh::Node& node, const glm::vec3& origin, const glm::vec3& inverse, float tMin, float tMax) {
-  const glm::vec3 t0 = (node.low - origin) * inverse, t1 = (node.high - origin) * inverse;
-  const glm::vec3 near = glm::min(t0, t1), far = glm::max(t0, t1);
-  return std::max({near.x, near.y, near.z, tMin}) <= std::min({far.x, far.y, far.z, tMax});
-}
-
 }  // namespace
 
 TriangleBvh TriangleBvh::build(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices) {
@@ -88,7 +84,7 @@ std::optional<TriangleBvh::Hit> TriangleBvh::intersect(const glm::vec3& origin, 
   while (!stack.empty()) {
     const Node& node = nodes_[stack.back()];
     stack.pop_back();
-    if (!hitsBox(node, origin, inverse, minDistance, tMax)) continue;
+    if (!rayMeetsBox(node.low, node.high, origin, inverse, minDistance, tMax)) continue;
     if (node.count == 0) {
       stack.push_back(node.first);
       stack.push_back(node.first + 1);

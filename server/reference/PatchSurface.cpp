@@ -1,5 +1,7 @@
 #include "reference/PatchSurface.h"
 
+#include "math/RayBox.h"
+
 namespace specula::reference {
 
 PatchSurface::PatchSurface(const std::vector<math::BezierPatch>& objectPatches, const glm::mat4& objectToWorld) {
@@ -26,6 +28,15 @@ std::optional<PatchSurfaceHit> PatchSurface::intersectPiece(std::size_t piece, c
   const auto hit = math::intersectPatch(p.bezier, origin, direction, tMin, tMax);
   if (!hit) return std::nullopt;
   return PatchSurfaceHit{hit->t, p.patch, p.low + hit->uv / static_cast<double>(kPiecesPerSide)};
+}
+
+bool PatchSurface::meetsBefore(const glm::dvec3& origin, const glm::dvec3& direction, double tMax) const {
+  const glm::dvec3 inverse = 1.0 / direction;
+  for (std::size_t piece = 0; piece < pieces_.size(); ++piece) {
+    const auto [low, high] = pieceBounds(piece);
+    if (math::rayMeetsBox(low, high, origin, inverse, 0.0, tMax) && intersectPiece(piece, origin, direction, 0.0, tMax)) return true;
+  }
+  return false;
 }
 
 }  // namespace specula::reference

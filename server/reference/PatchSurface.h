@@ -30,6 +30,9 @@ class PatchSurface {
   // Where the ray meets piece `piece` for t in (tMin, tMax).
   std::optional<PatchSurfaceHit> intersectPiece(std::size_t piece, const glm::dvec3& origin, const glm::dvec3& direction,
                                                 double tMin, double tMax) const;
+  // Whether the ray meets any piece for t in (0, tMax): every piece's box tested, no hierarchy (the
+  // ray tracer has Embree's; this serves checks off the render path).
+  bool meetsBefore(const glm::dvec3& origin, const glm::dvec3& direction, double tMax) const;
   math::PatchSample sample(const PatchSurfaceHit& hit) const { return patches_[hit.patch].sample(hit.uv.x, hit.uv.y); }
   // A distance below which a ray leaving the surface is taken to meet its own start again.
   double selfHitDistance() const { return selfHitDistance_; }

@@ -31,7 +31,7 @@ layout(location = 1) out vec4 outNormal;   // w = the texel's part + 1
 layout(location = 2) out vec4 outSurface;  // (u, v, patch, 1)
 
 // The grid triangle of the parametric mesh at (u, v) on patch `patchIndex`: quad (i, j) holds
-// triangles (a, b, d) below its diagonal and (a, d, c) above it (math::tessellatePatchGrid).
+// triangles (a, b, d) below its diagonal and (a, d, c) above it (math::patchGridTriangle).
 int gridTriangle(vec2 uv) {
   vec2 cell = uv * float(patchSegments);
   ivec2 quad = clamp(ivec2(floor(cell)), ivec2(0), ivec2(patchSegments - 1));

@@ -60,9 +60,17 @@ namespace specula::gl {
   X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                                     \
   X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData)                                                 \
   X(PFNGLDRAWARRAYSINDIRECTPROC, DrawArraysIndirect)                                               \
+  X(PFNGLMULTIDRAWARRAYSINDIRECTPROC, MultiDrawArraysIndirect)                                     \
+  X(PFNGLDRAWELEMENTSINDIRECTPROC, DrawElementsIndirect)                                           \
   X(PFNGLBUFFERDATAPROC, BufferData)                                                               \
   X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                         \
   X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                                                   \
+  X(PFNGLBUFFERSTORAGEPROC, BufferStorage)                                                         \
+  X(PFNGLMAPBUFFERRANGEPROC, MapBufferRange)                                                       \
+  X(PFNGLUNMAPBUFFERPROC, UnmapBuffer)                                                             \
+  X(PFNGLFENCESYNCPROC, FenceSync)                                                                 \
+  X(PFNGLCLIENTWAITSYNCPROC, ClientWaitSync)                                                       \
+  X(PFNGLDELETESYNCPROC, DeleteSync)                                                               \
   X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                                                     \
   X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                               \
   X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                     \

@@ -30,6 +30,9 @@ class GlContext {
   static Result<std::unique_ptr<GlContext>> create(PlatformChoice choice);
 
   const GlApi& api() const { return api_; }
+  // The function table itself, for wrapping entry points: everything made from this context calls
+  // through it (tests count the calls that wait for the GPU).
+  GlApi& apiToInstrument() { return api_; }
   const GlInfo& info() const { return info_; }
   Status makeCurrent() { return platform_->makeCurrent(); }
 

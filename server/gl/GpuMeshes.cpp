@@ -48,6 +48,11 @@ void GpuMeshes::draw(std::size_t index) const {
   gl_->DrawElements(GL_TRIANGLES, entry.indexCount, GL_UNSIGNED_INT, nullptr);
 }
 
+void GpuMeshes::drawIndirect(std::size_t index, GLintptr offset) const {
+  gl_->BindVertexArray(meshes_.at(index).vertexArray.id());
+  gl_->DrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset));
+}
+
 void GpuMeshes::drawPatches(std::size_t index) const {
   const Entry& entry = meshes_.at(index);
   gl_->BindBufferBase(GL_SHADER_STORAGE_BUFFER, kPatchPointsBinding, entry.patchPoints.value().id());

@@ -21,6 +21,9 @@ class GpuMeshes {
 
   // Draws all triangles of mesh `index` with the program and state currently bound.
   void draw(std::size_t index) const;
+  // Draws mesh `index` by the DrawElementsIndirectCommand at `offset` of the bound
+  // GL_DRAW_INDIRECT_BUFFER (the GPU decides whether it is drawn: its instance count).
+  void drawIndirect(std::size_t index, GLintptr offset) const;
   // Draws mesh `index`'s Bézier patches, one GL patch of one vertex each (the tessellation shaders
   // read patch gl_PrimitiveID's control points from kPatchPointsBinding), with the program bound.
   void drawPatches(std::size_t index) const;

@@ -209,15 +209,6 @@ void ReflectionResources::resetStatistics() {
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
-SearchStatistics ReflectionResources::readStatistics() const {
-  SearchStatistics result;
-  gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
-  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof result, &result);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return result;
-}
-
 std::vector<ReflectedVertex> ReflectionResources::readReflectedVertices() const {
   std::vector<ReflectedVertex> result(slots_.slotCount);
   gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -102,7 +102,6 @@ class ReflectionResources {
   // now on; an empty `next` is a fresh buffer that starts cold. Lets one renderer serve several views.
   gl::GlBuffer exchangeReflectedVertices(std::optional<gl::GlBuffer> next);
   void resetStatistics();
-  SearchStatistics readStatistics() const;
   std::vector<ReflectedVertex> readReflectedVertices() const;
   // One level of the last frame's ray hierarchy, every layer: spheres then cones, RGBA per texel
   // (a GPU readback; empty when no frame has built it).

@@ -47,6 +47,8 @@ std::optional<std::string> reflectionSettingsProblem(const ReflectionSettings& s
   if (settings.explosionMapSize < kMinExplosionMapSize || settings.explosionMapSize > kMaxExplosionMapSize)
     return "explosion map size must lie in [" + std::to_string(kMinExplosionMapSize) + ", " + std::to_string(kMaxExplosionMapSize) +
            "] texels per side";
+  if (settings.tessellation.maxLevel < 0 || settings.tessellation.maxLevel > kMaxTessellationLevel)
+    return "the tessellation level must lie in [0, " + std::to_string(kMaxTessellationLevel) + "]";
   if (settings.maxWalkSteps < 1) return "the search needs at least one step per climb";
   return std::nullopt;
 }

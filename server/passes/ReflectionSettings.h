@@ -96,6 +96,7 @@ inline constexpr float kMinGBufferScale = 0.125f, kMaxGBufferScale = 4.0f;
 inline constexpr int kMinEnvironmentMapSize = 8, kMaxEnvironmentMapSize = 2048;
 inline constexpr float kMaxErrorBudgetPixels = 16.0f;
 inline constexpr int kMinExplosionMapSize = 16, kMaxExplosionMapSize = 4096;
+inline constexpr int kMaxTessellationLevel = 8;  // 4^8 = 65 536 triangles from one: the lists' cap stops it anyway
 
 struct ReflectionSettings {
   ReflectionMethod method = ReflectionMethod::Search;

@@ -4,120 +4,135 @@
 
 namespace specula::passes {
 
+namespace {
+// Lists start with room for this many triangles at least, so a small scene never grows them.
+constexpr std::size_t kInitialTriangles = std::size_t{1} << 14;
+
+// (Re)allocates `buffer` to `bytes`, content undefined.
+void allocate(const gl::GlApi& gl, const gl::GlBuffer& buffer, std::size_t bytes, const void* data = nullptr) {
+  gl.BindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+  gl.BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 4)), data, GL_DYNAMIC_COPY);
+  gl.BindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
+
+// Grows a capacity by half again at least, so a slowly growing scene does not reallocate every frame.
+std::size_t grown(std::size_t capacity, std::size_t needed) {
+  return std::min(TessellationBuffers::kMaxTriangles, std::max(needed, capacity + capacity / 2));
+}
+}  // namespace
+
 TessellationBuffers::TessellationBuffers(const gl::GlApi& gl)
     : gl_(&gl),
-      working_{{gl::GlBuffer(gl)}, {gl::GlBuffer(gl)}},
-      finished_{gl::GlBuffer(gl)},
-      splits_{gl::GlBuffer(gl)},
-      requests_{gl::GlBuffer(gl)},
-      requestCounts_{gl::GlBuffer(gl)},
-      counters_(gl), midpointStatistics_(gl) {
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+      working_{gl::GlBuffer(gl), gl::GlBuffer(gl)},
+      finished_(gl),
+      splits_(gl),
+      requests_(gl),
+      runRecords_(gl),
+      draws_(gl),
+      totals_(gl),
+      midpointStatistics_(gl) {
+  allocate(gl, totals_, sizeof(gpu::TessellationTotals));
+  allocate(gl, midpointStatistics_, sizeof(SearchStatistics));
 }
 
-void TessellationBuffers::beginFrame() {
-  finishedCount_ = 0;
-  ranges_.clear();
+void TessellationBuffers::beginFrame(std::vector<TessellatedRun> runs, const std::vector<gpu::TessellationRun>& records,
+                                     const std::vector<gpu::RunDraws>& draws, std::size_t largestPart) {
+  const gl::GlApi& gl = *gl_;
+  runs_ = std::move(runs);
   statistics_ = {};
-  const SearchStatistics zero{};
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());
-  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof zero, &zero);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-}
-
-void TessellationBuffers::reserve(GrowingBuffer& target, std::size_t bytes, std::size_t keepBytes) {
-  if (bytes <= target.capacityBytes) return;
-  // Grow by half again, so a slowly growing frame does not reallocate every round.
-  const std::size_t capacity = std::max(bytes, target.capacityBytes + target.capacityBytes / 2);
-  gl::GlBuffer grown(*gl_);
-  gl_->BindBuffer(GL_COPY_WRITE_BUFFER, grown.id());
-  gl_->BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_COPY);
-  if (keepBytes > 0) {
-    gl_->BindBuffer(GL_COPY_READ_BUFFER, target.buffer.id());
-    gl_->CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, static_cast<GLsizeiptr>(keepBytes));
-    gl_->BindBuffer(GL_COPY_READ_BUFFER, 0);
+  std::size_t roundInput = 0;
+  for (const gpu::TessellationRun& record : records) roundInput += record.work[0].count;
+  inputTriangles_ = predictedUnsplitObjects_ = predictedUnsplitTriangles_ = 0;
+  for (std::size_t i = 0; i < runs_.size(); ++i) {
+    const std::uint32_t triangles = draws[i].mesh.count / 3;
+    inputTriangles_ += triangles;
+    if (runs_[i].rounds) continue;
+    ++predictedUnsplitObjects_;
+    predictedUnsplitTriangles_ += triangles;
   }
-  gl_->BindBuffer(GL_COPY_WRITE_BUFFER, 0);
-  target.buffer = std::move(grown);
-  target.capacityBytes = capacity;
-}
-
-bool TessellationBuffers::reserveWorking(int list, std::size_t triangles) {
-  if (triangles > kMaxTriangles) return false;
-  reserve(working_[list], triangles * kTriangleBytes, 0);
-  return true;
-}
-
-bool TessellationBuffers::reserveSplits(std::size_t triangles) {
-  if (triangles > kMaxTriangles) return false;
-  reserve(splits_, triangles * kSplitBytes, 0);
-  return true;
-}
-
-bool TessellationBuffers::reserveRequests(std::size_t triangles, std::size_t runs) {
-  if (triangles > kMaxTriangles) return false;
-  reserve(requests_, std::max<std::size_t>(triangles, 1) * kRequestBytes, 0);
-  const std::vector<std::uint32_t> zero(4 * std::max<std::size_t>(runs, 1), 0);
-  reserve(requestCounts_, zero.size() * sizeof(std::uint32_t), 0);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, requestCounts_.buffer.id());
-  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(zero.size() * sizeof(std::uint32_t)), zero.data());
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return true;
-}
-
-bool TessellationBuffers::reserveFinished(std::size_t more) {
-  const std::size_t total = finishedCount_ + more;
-  if (total > kMaxTriangles) return false;
-  reserve(finished_, total * kTriangleBytes, finishedCount_ * kTriangleBytes);
-  return true;
-}
-
-void TessellationBuffers::resetCounters(std::size_t objects) {
-  const std::vector<RoundCounts> zero(std::max<std::size_t>(objects, 1));
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, counters_.id());
-  if (zero.size() > counterCapacity_) {
-    counterCapacity_ = zero.size();
-    gl_->BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(counterCapacity_ * sizeof(RoundCounts)), nullptr, GL_DYNAMIC_READ);
+  const std::size_t working = std::min(kMaxTriangles, std::max({workingCapacity_, 2 * largestPart, kInitialTriangles}));
+  if (working != workingCapacity_) {
+    for (const gl::GlBuffer& list : working_) allocate(gl, list, working * kTriangleBytes);
+    workingCapacity_ = working;
   }
-  gl_->BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(zero.size() * sizeof(RoundCounts)), zero.data());
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  // Round 0 numbers a part's mesh triangles run after run, later rounds their places in a working list.
+  const std::size_t splits = std::max(workingCapacity_, std::min(largestPart, kMaxTriangles));
+  if (splits > splitCapacity_) {
+    allocate(gl, splits_, splits * kSplitBytes);
+    allocate(gl, requests_, splits * kRequestBytes);
+    splitCapacity_ = splits;
+  }
+  const std::size_t finished = std::min(kMaxTriangles, std::max({finishedCapacity_, 2 * roundInput, kInitialTriangles}));
+  if (finished != finishedCapacity_) {
+    allocate(gl, finished_, finished * kTriangleBytes);
+    finishedCapacity_ = finished;
+  }
+  if (records.size() > runCapacity_) {
+    runCapacity_ = records.size();
+    allocate(gl, runRecords_, runCapacity_ * sizeof(gpu::TessellationRun));
+    allocate(gl, draws_, runCapacity_ * sizeof(gpu::RunDraws));
+  }
+  const gpu::TessellationTotals noTotals{};
+  const SearchStatistics noSearches{};
+  const auto upload = [&](const gl::GlBuffer& buffer, std::size_t bytes, const void* data) {
+    if (bytes == 0) return;
+    gl.BindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    gl.BufferSubData(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
+    gl.BindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  };
+  upload(runRecords_, records.size() * sizeof(gpu::TessellationRun), records.data());
+  upload(draws_, draws.size() * sizeof(gpu::RunDraws), draws.data());
+  upload(totals_, sizeof noTotals, &noTotals);
+  upload(midpointStatistics_, sizeof noSearches, &noSearches);
 }
 
-std::vector<TessellationBuffers::RoundCounts> TessellationBuffers::readCounters(std::size_t objects) const {
-  std::vector<RoundCounts> counts(objects);
-  gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, counters_.id());
-  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(objects * sizeof(RoundCounts)), counts.data());
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return counts;
+bool TessellationBuffers::finishFrame(const gpu::TessellationTotals& totals, const SearchStatistics& midpoints) {
+  statistics_.inputTriangles = inputTriangles_;
+  statistics_.predictedUnsplitObjects = predictedUnsplitObjects_;
+  statistics_.midpointSearches = midpoints;
+  statistics_.capped = totals.capped != 0;
+  statistics_.finishedTriangles = totals.finished + totals.meshTriangles + predictedUnsplitTriangles_;
+  // Rounds no triangle entered are not reported (the CPU launched them, empty, not knowing).
+  std::size_t rounds = TESSELLATION_MAX_ROUNDS;
+  while (rounds > 0 && totals.trianglesPerRound[rounds - 1] == 0) --rounds;
+  statistics_.trianglesPerRound.assign(totals.trianglesPerRound, totals.trianglesPerRound + rounds);
+  bool outgrown = false;
+  if (totals.neededWorking > workingCapacity_ && workingCapacity_ < kMaxTriangles) {
+    const std::size_t working = grown(workingCapacity_, totals.neededWorking);
+    for (const gl::GlBuffer& list : working_) allocate(*gl_, list, working * kTriangleBytes);
+    workingCapacity_ = working;
+    outgrown = true;
+  }
+  if (totals.neededFinished > finishedCapacity_ && finishedCapacity_ < kMaxTriangles) {
+    finishedCapacity_ = grown(finishedCapacity_, totals.neededFinished);
+    allocate(*gl_, finished_, finishedCapacity_ * kTriangleBytes);
+    outgrown = true;
+  }
+  return outgrown;
 }
 
 std::vector<FinishedVertex> TessellationBuffers::readFinished() const {
-  std::vector<TessellatedVertex> records(3 * finishedCount_);
-  if (!records.empty()) {
-    gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, finished());
-    gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(records.size() * kRecordBytes), records.data());
-    gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  }
   std::vector<FinishedVertex> vertices;
-  for (const TessellatedRange& range : ranges_) {
-    if (range.fromMesh) continue;
-    for (GLsizei k = 0; k < 3 * range.triangles; ++k)
-      vertices.push_back({range.mirror->mirrorObject, range.mirror->part, records[static_cast<std::size_t>(3 * range.firstTriangle + k)]});
+  if (runs_.empty()) return vertices;
+  const gl::GlApi& gl = *gl_;
+  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<gpu::RunDraws> draws(runs_.size());
+  gl.BindBuffer(GL_COPY_READ_BUFFER, draws_.id());
+  gl.GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(draws.size() * sizeof(gpu::RunDraws)), draws.data());
+  std::size_t records = 0;
+  for (const gpu::RunDraws& run : draws)
+    for (const gpu::DrawArraysCommand& round : run.rounds) records = std::max<std::size_t>(records, round.first + round.count);
+  std::vector<TessellatedVertex> finished(records);
+  if (!finished.empty()) {
+    gl.BindBuffer(GL_COPY_READ_BUFFER, finished_.id());
+    gl.GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(records * kRecordBytes), finished.data());
   }
+  gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
+  for (std::size_t i = 0; i < runs_.size(); ++i)
+    for (const gpu::DrawArraysCommand& round : draws[i].rounds)
+      for (std::uint32_t k = 0; k < round.count; ++k)
+        vertices.push_back({runs_[i].mirror->mirrorObject, runs_[i].mirror->part, finished[round.first + k]});
   return vertices;
-}
-
-const TessellationStatistics& TessellationBuffers::finishStatistics() {
-  gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, midpointStatistics_.id());
-  gl_->GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(SearchStatistics), &statistics_.midpointSearches);
-  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  statistics_.finishedTriangles += static_cast<std::uint32_t>(finishedCount_);  // the meshes drawn whole were counted already
-  return statistics_;
 }
 
 }  // namespace specula::passes

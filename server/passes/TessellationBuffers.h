@@ -1,13 +1,17 @@
 #pragma once
 // GPU buffers of adaptive tessellation (shaders/tessellation): two working lists that rounds
 // ping-pong between, the finished list the virtual-objects pass draws, the per-triangle split
-// decisions and the round's counters. Lists are triangle soups of TessellatedVertex records
-// (shaders/common/tessellated-vertex.glsl). Buffers grow on demand up to a cap; past the cap
-// triangles stop splitting, and the frame says so, instead of failing.
+// decisions, and the run records (common/tessellation-records.glsl) through which the GPU sizes and
+// launches each round and draws what it finished, so no count returns to the CPU within a frame.
+// Lists are triangle soups of TessellatedVertex records (shaders/common/tessellated-vertex.glsl).
+// The lists keep their size from frame to frame; a frame that outgrows them is reported by its
+// totals (read once the frame is done), and the renderer grows them and renders it again, up to
+// the cap, past which triangles stop splitting and the frame says so.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "common/tessellation-records.glsl"
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
 #include "passes/ReflectedVertex.h"
@@ -15,13 +19,12 @@
 
 namespace specula::passes {
 
-// Finished triangles of one reflected object in one mirror part (one range per round that finished some).
-struct TessellatedRange {
-  const MirrorSlots* mirror = nullptr;  // the part they reflect in
+// One reflected object of one mirror part, as tessellation hands it to the virtual-objects pass:
+// drawn from its mesh or from the finished list, as the GPU's records for run `run` say.
+struct TessellatedRun {
+  const MirrorSlots* mirror = nullptr;          // the part it reflects in
   const ReflectionSlotRange* object = nullptr;  // the reflected object and its search slots
-  GLint firstTriangle = 0;
-  GLsizei triangles = 0;
-  bool fromMesh = false;  // nothing split: draw the object's own mesh with its search slots
+  bool rounds = false;                          // false: predicted unsplit, drawn from its mesh with no round
 };
 
 // CPU view of one record of the lists: the std430 twin of TessellatedVertex in
@@ -57,64 +60,45 @@ class TessellationBuffers {
   static constexpr std::size_t kTriangleBytes = 3 * kRecordBytes;
   static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 32;  // one EdgeSplit
   static constexpr std::size_t kRequestBytes = 3 * sizeof(std::uint32_t);  // a triangle's edge requests, at most
-  static constexpr std::size_t kRunRequestBytes = 4 * sizeof(std::uint32_t);  // RunRequests: count, indirect dispatch
   static constexpr std::size_t kMaxTriangles = std::size_t{1} << 20;  // per list: 240 MiB
 
   explicit TessellationBuffers(const gl::GlApi& gl);
 
-  // Forgets last frame's lists and zeroes the statistics.
-  void beginFrame();
-  // Make room for `triangles` in working list `list` (content not kept) or, for split decisions,
-  // in the split buffer; false past kMaxTriangles.
-  bool reserveWorking(int list, std::size_t triangles);
-  bool reserveSplits(std::size_t triangles);
-  // Room for the edge requests of `triangles` working triangles, split into `runs` lists, whose
-  // counts start at zero.
-  bool reserveRequests(std::size_t triangles, std::size_t runs);
-  // Make room for `more` finished triangles after the current ones, keeping them.
-  bool reserveFinished(std::size_t more);
+  // Starts a frame whose runs are `runs` (each part's in a row) with these round-0 records and
+  // draws; `largestPart`: the most triangles one part's runs bring into round 0. Zeroes the totals.
+  void beginFrame(std::vector<TessellatedRun> runs, const std::vector<gpu::TessellationRun>& records,
+                  const std::vector<gpu::RunDraws>& draws, std::size_t largestPart);
 
-  GLuint working(int list) const { return working_[list].buffer.id(); }
-  GLuint finished() const { return finished_.buffer.id(); }
-  GLuint splits() const { return splits_.buffer.id(); }
-  GLuint requests() const { return requests_.buffer.id(); }
-  GLuint requestCounts() const { return requestCounts_.buffer.id(); }
-  GLuint counters() const { return counters_.id(); }
+  GLuint working(int list) const { return working_[list].id(); }
+  GLuint finished() const { return finished_.id(); }
+  GLuint splits() const { return splits_.id(); }
+  GLuint requests() const { return requests_.id(); }
+  GLuint runs() const { return runRecords_.id(); }
+  GLuint draws() const { return draws_.id(); }
+  GLuint totals() const { return totals_.id(); }
   GLuint midpointStatistics() const { return midpointStatistics_.id(); }
-  std::size_t finishedCount() const { return finishedCount_; }
-  void addFinished(std::size_t triangles) { finishedCount_ += triangles; }
+  std::size_t workingCapacity() const { return workingCapacity_; }
+  std::size_t finishedCapacity() const { return finishedCapacity_; }
+  const std::vector<TessellatedRun>& frameRuns() const { return runs_; }
 
-  // Per object of a round: the triangles its split ones become and those finished. Zeroes them
-  // before a round; reads them after it (one readback for every object).
-  struct RoundCounts {
-    std::uint32_t children = 0, unsplit = 0;
-  };
-  void resetCounters(std::size_t objects);
-  std::vector<RoundCounts> readCounters(std::size_t objects) const;
+  // The frame's statistics from its totals and midpoint-search totals as read back once the frame
+  // was done (`totals`, `midpoints`); grows the lists for the next frame when the totals say this
+  // one outgrew them, and then returns true: the frame must be rendered again to be whole.
+  bool finishFrame(const gpu::TessellationTotals& totals, const SearchStatistics& midpoints);
+  const TessellationStatistics& statistics() const { return statistics_; }
 
-  // Every vertex of the finished lists, with its mirror (a GPU readback; ranges drawn from meshes
-  // have no records: their vertices are the search slots').
+  // Every vertex of the finished lists, with its mirror (a GPU readback, outside the frame; runs
+  // drawn from meshes have no records: their vertices are the search slots').
   std::vector<FinishedVertex> readFinished() const;
 
-  std::vector<TessellatedRange>& ranges() { return ranges_; }
-  const std::vector<TessellatedRange>& ranges() const { return ranges_; }
-  TessellationStatistics& statistics() { return statistics_; }
-  // Fills in the midpoint search totals (a GPU readback) and returns the frame's statistics.
-  const TessellationStatistics& finishStatistics();
-
  private:
-  struct GrowingBuffer {
-    gl::GlBuffer buffer;
-    std::size_t capacityBytes = 0;
-  };
-  void reserve(GrowingBuffer& target, std::size_t bytes, std::size_t keepBytes);
-
   const gl::GlApi* gl_;
-  GrowingBuffer working_[2], finished_, splits_, requests_, requestCounts_;
-  gl::GlBuffer counters_, midpointStatistics_;
-  std::size_t counterCapacity_ = 0;  // objects
-  std::size_t finishedCount_ = 0;
-  std::vector<TessellatedRange> ranges_;
+  gl::GlBuffer working_[2], finished_, splits_, requests_, runRecords_, draws_, totals_, midpointStatistics_;
+  std::size_t workingCapacity_ = 0, finishedCapacity_ = 0, splitCapacity_ = 0;  // triangles
+  std::size_t runCapacity_ = 0;
+  std::vector<TessellatedRun> runs_;
+  // This frame's, known before it: every run's triangles, and those of runs with no round.
+  std::uint32_t inputTriangles_ = 0, predictedUnsplitObjects_ = 0, predictedUnsplitTriangles_ = 0;
   TessellationStatistics statistics_;
 };
 

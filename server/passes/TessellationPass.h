@@ -1,10 +1,13 @@
 #pragma once
 // Adaptive tessellation of reflected geometry (Szabo 2013, ch. 4, shaders/tessellation): per
-// visible mirror and reflected object, rounds of split decisions and emission turn the object's
+// visible mirror part and reflected object, rounds of split decisions and emission turn the object's
 // triangles into finer ones where a straight virtual edge would miss the curved reflection, up to
-// the level limit. A round runs four compute kernels: a cheap classification of every triangle lists
+// the level limit. A round runs five compute kernels: a cheap classification of every triangle lists
 // the edges whose midpoint needs a search, the search runs only for those, a decision per triangle
-// reads the results, and emission writes the finished triangles and the next round's children.
+// counts what it becomes, one invocation lays the part's runs out in the lists, and emission writes
+// the finished triangles and the next round's children. Every count stays on the GPU: each round is
+// launched by indirect dispatches that the previous one wrote, and the virtual-objects pass draws by
+// indirect commands, so the CPU issues every round of every level without waiting for any.
 #include <memory>
 
 #include "base/Result.h"
@@ -22,24 +25,21 @@ class TessellationPass final : public Pass {
 
  private:
   struct Programs {
-    gl::ShaderProgram classify, dispatch, search, decide, emit;
+    gl::ShaderProgram classify, dispatch, search, decide, layout, emit;
   };
-  // One object's triangles in the round's working list.
-  struct ObjectRun {
-    const ReflectionSlotRange* range;
-    std::size_t first = 0, triangles = 0;
+  // One part's runs: [firstRun, firstRun + runCount) of the frame's.
+  struct PartRuns {
+    std::size_t planIndex = 0, firstRun = 0, runCount = 0;
   };
   explicit TessellationPass(Programs programs) : programs_(std::move(programs)) {}
-  // Tessellates every object the mirror reflects; finished triangles are appended to the frame's
-  // list, which this part may fill up to `finishedBudget` triangles in all.
-  void tessellateMirror(const FrameContext& frame, const PlannedMirror& mirror, std::size_t finishedBudget);
-  // Decides which edges of every run's triangles split (classify, search, decide) and counts each
-  // run's children and unsplit triangles into its pair of counters. `fromMesh`: round 0, whose
-  // corners come from the objects' meshes and search slots.
-  void decideRound(const FrameContext& frame, const std::vector<ObjectRun>& runs, bool fromMesh) const;
-  // Sets the uniforms of run `i` (and in round 0 binds its mesh) for a kernel of the round.
-  void setRun(const FrameContext& frame, const gl::ShaderProgram& program, const std::vector<ObjectRun>& runs, std::size_t i,
-              bool fromMesh) const;
+  // Lists the frame's runs and hands them with their round-0 records to the buffers.
+  std::vector<PartRuns> beginRuns(const FrameContext& frame) const;
+  // Every round of one part, from its meshes down to the deepest level.
+  void tessellatePart(const FrameContext& frame, const PartRuns& part) const;
+  // Runs `program` once per run of the part that goes through rounds: in round 0 over its mesh's
+  // triangles, later over the count the last layout wrote (`indirect`: its offset in the run record).
+  void dispatchRuns(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round,
+                    std::size_t indirectOffset) const;
 
   Programs programs_;
 };

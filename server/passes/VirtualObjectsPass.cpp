@@ -1,6 +1,7 @@
 #include "passes/VirtualObjectsPass.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <limits>
 
@@ -51,61 +52,68 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
                                                                     std::move(composite.value())));
 }
 
-void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const {
+void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range,
+                                  std::optional<GLintptr> indirect) const {
   frame.setReflectedObject(objects_, range);
   setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material], frame.textures);
-  frame.meshes.draw(frame.scene.objects[range.object].mesh);
+  const std::size_t mesh = frame.scene.objects[range.object].mesh;
+  if (indirect) frame.meshes.drawIndirect(mesh, *indirect);
+  else frame.meshes.draw(mesh);
 }
 
 void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMirror& mirror) const {
+  const gl::GlApi& gl = frame.gl;
   if (!frame.plan.tessellate) {
     objects_.use();
     for (const ReflectionSlotRange* range : mirror.reflected) drawMesh(frame, *range);
     return;
   }
+  // Each of the part's runs as the tessellation's GPU records say: its mesh (when nothing of it
+  // split, or it found no room) and each round's finished triangles, all by indirect commands.
   const TessellationBuffers& tessellation = frame.reflections.tessellation();
-  for (const TessellatedRange& range : tessellation.ranges()) {
-    if (range.mirror != mirror.slots || range.triangles == 0) continue;  // another mirror, or another part of this one
-    if (range.fromMesh) {
-      objects_.use();
-      drawMesh(frame, *range.object);
-      continue;
-    }
+  const std::vector<TessellatedRun>& runs = tessellation.frameRuns();
+  gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, tessellation.draws());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
+  const auto rounds = static_cast<GLsizei>(frame.settings.tessellation.maxLevel + 1);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (runs[i].mirror != mirror.slots) continue;  // another mirror, or another part of this one
+    const std::size_t draws = i * sizeof(gpu::RunDraws);
+    objects_.use();
+    drawMesh(frame, *runs[i].object, static_cast<GLintptr>(draws + offsetof(gpu::RunDraws, mesh)));
+    if (!runs[i].rounds) continue;
     tessellated_.use();
-    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
-    frame.gl.BindVertexArray(emptyVertexArray_.id());
-    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[range.object->object].material], frame.textures);
-    frame.gl.DrawArrays(GL_TRIANGLES, 3 * range.firstTriangle, 3 * range.triangles);
+    gl.BindVertexArray(emptyVertexArray_.id());
+    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[runs[i].object->object].material], frame.textures);
+    gl.MultiDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(draws + offsetof(gpu::RunDraws, rounds)), rounds, 0);
   }
+  gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
-std::vector<std::uint32_t> VirtualObjectsPass::readUncoveredCounts() const {
-  std::vector<std::uint32_t> counts(plannedParts_, 0);
-  if (counts.empty()) return counts;
-  gl_->BindBuffer(GL_COPY_READ_BUFFER, uncoveredCounts_.id());
-  gl_->GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(counts.size() * sizeof(std::uint32_t)), counts.data());
-  return counts;
-}
-
-std::vector<CastTileCount> VirtualObjectsPass::readCastTileCounts() const {
-  std::vector<CastTileCount> counts(castParts_.size());
+void VirtualObjectsPass::queueStatistics(gl::GpuReadback& readback) {
   std::size_t commands = 0;
   for (const CastPart& part : castParts_) commands += part.tiled ? part.objects.size() : 0;
-  std::vector<DrawCommand> draws(commands);
-  if (commands > 0) {
-    gl_->BindBuffer(GL_COPY_READ_BUFFER, castDraws_.id());
-    gl_->GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(commands * sizeof(DrawCommand)), draws.data());
-  }
-  for (std::size_t i = 0; i < castParts_.size(); ++i) {
+  castCommands_ = commands;
+  uncoveredHandle_ = readback.copy(uncoveredCounts_.id(), std::max<std::size_t>(plannedParts_, 1) * sizeof(std::uint32_t));
+  if (commands > 0) castHandle_ = readback.copy(castDraws_.id(), commands * sizeof(DrawCommand));
+}
+
+std::vector<VirtualObjectsPass::PartStatistics> VirtualObjectsPass::readStatistics(const gl::GpuReadback& readback) const {
+  std::vector<PartStatistics> parts(plannedParts_);
+  const std::vector<std::uint32_t> uncovered = readback.read<std::uint32_t>(uncoveredHandle_, plannedParts_);
+  const std::vector<DrawCommand> draws = readback.read<DrawCommand>(castHandle_, castCommands_);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    parts[i].uncoveredRayCast = uncovered[i];
+    if (i >= castParts_.size()) continue;
     const CastPart& part = castParts_[i];
-    counts[i].possible = part.objects.size() * part.tileCapacity;
+    CastTileCount& tiles = parts[i].castTiles;
+    tiles.possible = part.objects.size() * part.tileCapacity;
     if (!part.tiled) {
-      counts[i].listed = counts[i].possible;
+      tiles.listed = tiles.possible;
       continue;
     }
-    for (std::size_t k = 0; k < part.objects.size(); ++k) counts[i].listed += draws[part.firstObject + k].instances;
+    for (std::size_t k = 0; k < part.objects.size(); ++k) tiles.listed += draws[part.firstObject + k].instances;
   }
-  return counts;
+  return parts;
 }
 
 void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const PlannedMirror& planned, std::size_t partIndex) {

@@ -4,10 +4,12 @@
 // then adds each mirror's reflection, weighted by its reflectivity, over its surface colour.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "base/Result.h"
 #include "gl/GlObject.h"
+#include "gl/GpuReadback.h"
 #include "gl/ShaderProgram.h"
 #include "passes/Pass.h"
 
@@ -19,11 +21,14 @@ class VirtualObjectsPass final : public Pass {
 
   std::string_view name() const override { return "virtual-objects"; }
   void execute(const FrameContext& frame) override;
-  // Per part of the last frame's plan, the pixels its virtual objects left uncovered that were
-  // ray-cast (settings.rayCastUncovered; 0 for ray-cast parts). A GPU readback.
-  std::vector<std::uint32_t> readUncoveredCounts() const;
-  // Per part of the last frame's plan, its ray cast's tile counts (zero for parts not ray-cast). A GPU readback.
-  std::vector<CastTileCount> readCastTileCounts() const;
+  // What the last frame's plan did per part, queued on `readback` after the frame's passes and read
+  // from it once it has waited.
+  struct PartStatistics {
+    std::uint32_t uncoveredRayCast = 0;  // pixels no virtual object covered, ray-cast (settings.rayCastUncovered)
+    CastTileCount castTiles;             // a ray-cast part's tiles (zero for parts not ray-cast)
+  };
+  void queueStatistics(gl::GpuReadback& readback);
+  std::vector<PartStatistics> readStatistics(const gl::GpuReadback& readback) const;
 
  private:
   VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region,
@@ -84,8 +89,9 @@ class VirtualObjectsPass final : public Pass {
                       std::size_t object) const;
   // Draws the mirror's virtual objects with whichever program each needs.
   void drawObjects(const FrameContext& frame, const PlannedMirror& mirror) const;
-  // One reflected object from its own mesh and search slots (objects_ in use).
-  void drawMesh(const FrameContext& frame, const ReflectionSlotRange& range) const;
+  // One reflected object from its own mesh and search slots (objects_ in use); by the
+  // DrawElementsIndirectCommand at `indirect` of the bound indirect buffer when given.
+  void drawMesh(const FrameContext& frame, const ReflectionSlotRange& range, std::optional<GLintptr> indirect = std::nullopt) const;
   template <typename Value>
   void setForBoth(const char* name, const Value& value) const {
     for (const gl::ShaderProgram* program : {&objects_, &tessellated_}) {
@@ -117,6 +123,7 @@ class VirtualObjectsPass final : public Pass {
   gl::GlBuffer reflectedBoxes_;  // world bounds of the part's reflected objects (uncovered-pixels.frag)
   gl::GlBuffer uncoveredCounts_;  // one uint per planned part
   std::size_t plannedParts_ = 0;
+  std::size_t uncoveredHandle_ = 0, castHandle_ = 0, castCommands_ = 0;  // queueStatistics()'s copies
   struct CastPart {  // one planned part's ray cast this frame
     std::vector<std::size_t> objects;  // in draw order: nearest to the mirror first
     bool tiled = false;                // false: each object over all the part's pixels

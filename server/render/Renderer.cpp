@@ -25,10 +25,8 @@ namespace specula::render {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Nearest clip distance as a share of the far one when the eye is inside the scene's bounds:
@@ -62,6 +60,7 @@ Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> s
       textures_(context.api(), scene_->textures),
       slots_(std::move(slots)),
       reflections_(context.api(), *scene_, slots_),
+      readback_(context.api()),
       cpuRasterizer_(isCpuRasterizer(context.info().renderer)) {
   for (const scene::Mesh& mesh : scene_->meshes) {
     math::Bounds bounds;
@@ -119,6 +118,18 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   if (auto problem = passes::reflectionSettingsProblem(settings)) return Error{"cannot render: " + *problem};
   if (auto problem = math::sampleCountProblem(samples)) return Error{"cannot render: " + *problem};
   const Clock::time_point start = Clock::now();
+  // A frame whose tessellation outgrew its lists is drawn again once they have grown (a few times at
+  // most, each growing them by half again up to their cap), so no frame is coarser for it.
+  for (;;) {
+    bool outgrown = false;
+    Result<RenderedFrame> frame = renderOnce(pose, width, height, settings, samples, start, outgrown);
+    if (!frame || !outgrown) return frame;
+  }
+}
+
+Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int width, int height,
+                                           const passes::ReflectionSettings& settings, int samples, Clock::time_point start,
+                                           bool& tessellationOutgrown) {
   const gl::GlApi& gl = context_.api();
   if (!target_ || target_->width() != width || target_->height() != height) {
     target_.reset();  // free the old frame before allocating the new one
@@ -142,14 +153,17 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   }
   const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, textures_, view, plan, settings, *target_, reflections_};
 
-  // Stage i runs between marks i and i + 1: GPU timestamps, or on a CPU rasterizer, which runs a
-  // pass's draws only when a later command flushes them (timestamps there charged the scene pass's
-  // rasterization to whichever pass came last), the wall clock after the pass has finished.
+  // Stage i runs between marks i and i + 1. Per-pass timing (PassTiming::PerPass): GPU timestamps,
+  // or on a CPU rasterizer, which runs a pass's draws only when a later command flushes them
+  // (timestamps there charged the scene pass's rasterization to whichever pass came last), the
+  // wall clock after the pass has finished. PassTiming::FrameOnly names the stages and times the frame.
+  const bool timePasses = passTiming_ == PassTiming::PerPass;
   std::vector<std::string_view> stages;  // stage i ran between marks i and i + 1
   std::vector<double> wallMarks;
   std::size_t marks = 0;
   const auto mark = [&] {
-    if (cpuRasterizer_) {
+    if (!timePasses) {
+    } else if (cpuRasterizer_) {
       gl.Finish();
       wallMarks.push_back(millisecondsSince(start));
     } else {
@@ -189,7 +203,21 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     endStage("anti-aliasing");
   }
   view.jitterClip = glm::vec2(0.0f);  // the frame's view is the unshifted one
+
+  // The frame's statistics are copied out before its image is read and read after it: the image's
+  // read is the one wait of the frame (FrameStatistics).
+  const bool virtualObjectsRan = std::find(plan.passes.begin(), plan.passes.end(), "virtual-objects") != plan.passes.end();
+  readback_.begin();
+  // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
+  const std::size_t searchCopy = plan.search ? readback_.copy(reflections_.statistics(), sizeof(passes::SearchStatistics)) : 0;
+  const passes::TessellationBuffers& tessellation = reflections_.tessellation();
+  const std::size_t totalsCopy = plan.tessellate ? readback_.copy(tessellation.totals(), sizeof(passes::gpu::TessellationTotals)) : 0;
+  const std::size_t midpointCopy =
+      plan.tessellate ? readback_.copy(tessellation.midpointStatistics(), sizeof(passes::SearchStatistics)) : 0;
+  if (virtualObjectsRan) virtualObjects_->queueStatistics(readback_);
+  readback_.fence();
   RenderedFrame result{width, height, samples, target_->readRgba(), {}, {}, {}, frame.view, {}, plan.gbufferPrecision, {}};
+  if (!readback_.wait()) return Error{"the GPU did not finish the frame (driver: " + context_.info().renderer + ")"};
   for (const passes::PlannedMirror& mirror : plan.mirrors) {
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
     MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part,   mirror.slots->kind,     mirror.method,
@@ -199,28 +227,24 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }
-  // The pixels ray-cast where virtual objects left gaps, or where a cube map could not serve them.
-  const bool listsPixels = std::find(plan.passes.begin(), plan.passes.end(), "virtual-objects") != plan.passes.end() &&
-                           std::any_of(plan.mirrors.begin(), plan.mirrors.end(), [&](const passes::PlannedMirror& mirror) {
-                             return mirror.method == passes::PartMethod::EnvironmentMap ||
-                                    (mirror.method == passes::PartMethod::VirtualObjects && settings.rayCastUncovered);
-                           });
-  if (listsPixels) {
-    const std::vector<std::uint32_t> uncovered = virtualObjects_->readUncoveredCounts();
-    for (std::size_t i = 0; i < uncovered.size() && i < result.plan.size(); ++i) result.plan[i].uncoveredRayCast = uncovered[i];
-  }
-  if (std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
-                  [](const passes::PlannedMirror& mirror) { return mirror.method == passes::PartMethod::RayCast; })) {
-    const std::vector<passes::CastTileCount> tiles = virtualObjects_->readCastTileCounts();
-    for (std::size_t i = 0; i < tiles.size() && i < result.plan.size(); ++i) result.plan[i].castTiles = tiles[i];
+  if (virtualObjectsRan) {
+    const std::vector<passes::VirtualObjectsPass::PartStatistics> parts = virtualObjects_->readStatistics(readback_);
+    for (std::size_t i = 0; i < parts.size() && i < result.plan.size(); ++i) {
+      result.plan[i].uncoveredRayCast = parts[i].uncoveredRayCast;
+      result.plan[i].castTiles = parts[i].castTiles;
+    }
   }
   endStage("readback");
-  // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
-  if (plan.search) result.search = reflections_.readStatistics();
-  if (plan.tessellate) result.tessellation = reflections_.tessellation().statistics();
+  if (plan.search) result.search = readback_.read<passes::SearchStatistics>(searchCopy);
+  tessellationOutgrown = false;
+  if (plan.tessellate) {
+    tessellationOutgrown = reflections_.tessellation().finishFrame(readback_.read<passes::gpu::TessellationTotals>(totalsCopy),
+                                                                   readback_.read<passes::SearchStatistics>(midpointCopy));
+    result.tessellation = tessellation.statistics();
+  }
 
   std::vector<double> times(marks, 0.0);
-  for (std::size_t i = 0; i < marks; ++i) {
+  for (std::size_t i = 0; timePasses && i < marks; ++i) {
     if (cpuRasterizer_) {
       times[i] = wallMarks[i];
       continue;

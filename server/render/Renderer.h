@@ -2,6 +2,7 @@
 // Runs the passes a frame needs for one view and reads the frame back.
 // Owns GL resources: create, use and destroy it on the thread where its context is current.
 // Keeps per-view reflection state (last frame's reflection texels), so one Renderer serves one view.
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMeshes.h"
+#include "gl/GpuReadback.h"
 #include "gl/GpuTextures.h"
 #include "gl/RenderTarget.h"
 #include "math/Bounds.h"
@@ -63,6 +65,15 @@ struct RenderedFrame {
   std::vector<MirrorPlanSummary> plan;  // per visible mirror part, a mirror's parts in a row
 };
 
+// How a frame's stages are timed.
+enum class PassTiming {
+  // Each pass on its own: GPU timestamps, or on a CPU rasterizer glFinish after each pass (which
+  // keeps the rasterizer from overlapping passes, so the frame takes longer).
+  PerPass,
+  // The frame's wall time only; the stages are named, at 0 ms. No wait but the final image's read.
+  FrameOnly,
+};
+
 class Renderer {
  public:
   // Uploads the scene's meshes and builds every pass's program; fails on shader errors.
@@ -99,11 +110,17 @@ class Renderer {
   // at `pose`): triangles and their areas in pixels. Fails only if the probe's shaders do not build.
   Result<passes::PatchTessellationMeasure> measurePatchTessellation(const scene::ScenePose& pose, const RenderedFrame& frame);
   const scene::Scene& scene() const { return *scene_; }
+  void setPassTiming(PassTiming timing) { passTiming_ = timing; }
 
  private:
+  using Clock = std::chrono::steady_clock;
   Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots);
   passes::FrameView frameView(const math::Camera& camera, const std::vector<math::Bounds>& worldBounds,
                               float aspect) const;
+  // One try at render(): `tessellationOutgrown` says the frame's tessellation found its lists too
+  // small (they have grown since) and the frame is to be drawn again.
+  Result<RenderedFrame> renderOnce(const scene::ScenePose& pose, int width, int height, const passes::ReflectionSettings& settings,
+                                   int samples, Clock::time_point start, bool& tessellationOutgrown);
 
   gl::GlContext& context_;
   std::shared_ptr<const scene::Scene> scene_;
@@ -116,7 +133,9 @@ class Renderer {
   passes::VirtualObjectsPass* virtualObjects_ = nullptr;  // in passes_
   std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
   std::optional<SampleAccumulator> accumulator_;  // built on the first anti-aliased frame
+  gl::GpuReadback readback_;                 // the frame's statistics
   std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
+  PassTiming passTiming_ = PassTiming::PerPass;
   std::optional<passes::PatchTessellationProbe> patchProbe_;  // built on first use
   bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock
 };

@@ -3,11 +3,11 @@
 // their midpoint searched to be decided, listed for tessellation-search; Szabo's angle error, which
 // needs no search, is measured here. Carries no search code, so the many triangles that split
 // nothing cost little.
-layout(local_size_x = 64) in;
-
 #include "common/reflectable-triangle.glsl"
 #include "common/search-core.glsl"
 #include "tessellation/tessellation-round.glsl"
+
+layout(local_size_x = TESSELLATION_GROUP_SIZE) in;
 
 uniform vec4 mirrorRect;    // the mirror's bounds on screen in frame pixels: low x, y, high x, y
 uniform vec4 mirrorSphere;  // the mirror's bounding sphere in world space: centre, radius
@@ -52,8 +52,9 @@ bool nearMirror(TessellatedVertex a, TessellatedVertex b) {
 }
 
 void main() {
-  if (gl_GlobalInvocationID.x >= triangleCount) return;
-  uint triangle = firstTriangle + gl_GlobalInvocationID.x;
+  RunWork work = runs[runIndex].work[parity];
+  if (gl_GlobalInvocationID.x >= work.count) return;
+  uint triangle = work.first + gl_GlobalInvocationID.x;
   uint local = gl_GlobalInvocationID.x;
   TessellatedVertex corner[3] = TessellatedVertex[3](loadCorner(local, triangle, 0), loadCorner(local, triangle, 1), loadCorner(local, triangle, 2));
   int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
@@ -96,7 +97,7 @@ void main() {
     if (near[e]) nearBits |= 1 << e;
     if (!search[e]) continue;
     requested |= 1 << e;
-    requests[3u * firstTriangle + atomicAdd(runs[runIndex].count, 1u)] = (local << 2) | uint(e);
+    requests[3u * work.first + atomicAdd(runs[runIndex].requestCount, 1u)] = (local << 2) | uint(e);
   }
   splits[triangle].mask = ivec4(0, requested | (nearBits << 3) | (drawable ? kDrawable : 0), 0, 0);
   splits[triangle].error = vec4(error, 0.0);

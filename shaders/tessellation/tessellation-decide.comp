@@ -1,17 +1,14 @@
 #version 440 core
 // Round step 3, per working triangle: which edges split, from its classification and the errors of
-// its searched edges, and how many triangles it becomes.
-layout(local_size_x = 64) in;
-
+// its searched edges, and how many triangles it becomes, counted into its run.
 #include "tessellation/tessellation-round.glsl"
 
-layout(std430, binding = 5) buffer TessellationCounters {
-  uint counters[];  // per object of the round: triangles the split ones become, triangles finished
-};
+layout(local_size_x = TESSELLATION_GROUP_SIZE) in;
 
 void main() {
-  if (gl_GlobalInvocationID.x >= triangleCount) return;
-  uint triangle = firstTriangle + gl_GlobalInvocationID.x;
+  RunWork work = runs[runIndex].work[parity];
+  if (gl_GlobalInvocationID.x >= work.count) return;
+  uint triangle = work.first + gl_GlobalInvocationID.x;
   int requested = splits[triangle].mask.y & 7, nearBits = (splits[triangle].mask.y >> 3) & 7;
   vec3 error = splits[triangle].error.xyz;
   int mask = 0;
@@ -28,6 +25,6 @@ void main() {
   }
   splits[triangle].mask.x = mask;
   const uint kChildren[4] = uint[4](0u, 2u, 3u, 4u);  // by number of split edges
-  if (mask != 0) atomicAdd(counters[2u * runIndex], kChildren[bitCount(mask)]);
-  else if ((splits[triangle].mask.y & kDrawable) != 0) atomicAdd(counters[2u * runIndex + 1u], 1u);  // the others are dropped
+  if (mask != 0) atomicAdd(runs[runIndex].children, kChildren[bitCount(mask)]);
+  else if ((splits[triangle].mask.y & kDrawable) != 0) atomicAdd(runs[runIndex].unsplit, 1u);  // the others are dropped
 }

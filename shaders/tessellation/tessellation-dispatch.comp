@@ -1,22 +1,21 @@
 #version 440 core
-// Between classify and search, per object of the round: the search's work-group count from its
-// number of requests, so the search dispatches indirectly and the CPU waits for nothing.
-layout(local_size_x = 64) in;
+// Between classify and search, per run of the round: the search's work-group count from its number
+// of requests, so the search dispatches indirectly and the CPU waits for nothing.
+#include "common/tessellation-records.glsl"
 
-struct RunRequests {
-  uint count;
-  uint searchGroups[3];
-};
-layout(std430, binding = 8) buffer RequestCounts {
-  RunRequests runs[];
+layout(local_size_x = TESSELLATION_GROUP_SIZE) in;
+
+layout(std430, binding = TESSELLATION_RUNS_BINDING) buffer TessellationRuns {
+  TessellationRun runs[];
 };
 
+uniform uint firstRun;  // the part's runs: [firstRun, firstRun + runCount)
 uniform uint runCount;
 
 void main() {
-  uint run = gl_GlobalInvocationID.x;
-  if (run >= runCount) return;
-  runs[run].searchGroups[0] = (runs[run].count + 63u) / 64u;  // local_size_x of tessellation-search.comp
+  if (gl_GlobalInvocationID.x >= runCount) return;
+  uint run = firstRun + gl_GlobalInvocationID.x;
+  runs[run].searchGroups[0] = (runs[run].requestCount + uint(TESSELLATION_GROUP_SIZE) - 1u) / uint(TESSELLATION_GROUP_SIZE);
   runs[run].searchGroups[1] = 1u;
   runs[run].searchGroups[2] = 1u;
 }

@@ -1,58 +1,53 @@
 #version 440 core
-// Round step 4, per working triangle of one object: writes the round's output, the unsplit triangle
-// to the finished list and the split one's children to the next working list, each at a place
-// taken from the object's counters. Crack-free patterns by number of split edges: one → 2
+// Round step 5, per working triangle of one run: writes the round's output, the unsplit triangle
+// to the finished list and the split one's children to the next working list, each at a place in
+// the run's share that the layout gave it. Crack-free patterns by number of split edges: one → 2
 // triangles, two → 3, three → 4 (Szabo's 1→4), so both triangles on an edge share its new vertex
 // and no T-junction opens a hole (Szabo 2013, fig. 10a). Szabo emits with a geometry shader and
 // transform feedback; on a CPU rasterizer that cost 125-145 ms a frame in the kitchen, ufo and ants
 // scenes, a compute kernel a fraction of it.
-layout(local_size_x = 64) in;
-
 #include "tessellation/tessellation-round.glsl"
 
-layout(std430, binding = 5) buffer TessellationCounters {
-  uint counters[];  // per object: children written so far, finished triangles written so far
-};
-layout(std430, binding = 9) writeonly buffer FinishedTriangles {
+layout(local_size_x = TESSELLATION_GROUP_SIZE) in;
+
+layout(std430, binding = TESSELLATION_FINISHED_BINDING) writeonly buffer FinishedTriangles {
   TessellatedVertex finished[];
 };
-layout(std430, binding = 10) writeonly buffer NextWorkingTriangles {
+layout(std430, binding = TESSELLATION_NEXT_WORKING_BINDING) writeonly buffer NextWorkingTriangles {
   TessellatedVertex next[];
 };
 
-uniform int finishAll;      // 1 in the last round: nothing splits
-uniform uint finishedBase;  // this object's first triangle in the finished list this round
-uniform uint childrenBase;  // and in the next working list
-
 void writeFinished(TessellatedVertex a, TessellatedVertex b, TessellatedVertex c) {
-  uint at = 3u * (finishedBase + atomicAdd(counters[2u * runIndex + 1u], 1u));
+  uint at = 3u * (runs[runIndex].finishedBase + atomicAdd(runs[runIndex].finishedPlaced, 1u));
   finished[at] = a;
   finished[at + 1u] = b;
   finished[at + 2u] = c;
 }
 
 void writeChild(uint child, TessellatedVertex a, TessellatedVertex b, TessellatedVertex c) {
-  uint at = 3u * (childrenBase + child);
+  uint at = 3u * (runs[runIndex].childrenBase + child);
   next[at] = a;
   next[at + 1u] = b;
   next[at + 2u] = c;
 }
 
 void main() {
-  if (gl_GlobalInvocationID.x >= triangleCount) return;
-  uint triangle = firstTriangle + gl_GlobalInvocationID.x;
+  RunWork work = runs[runIndex].work[parity];
+  if (gl_GlobalInvocationID.x >= work.count || runs[runIndex].drawnFromMesh != 0) return;
+  uint triangle = work.first + gl_GlobalInvocationID.x;
   uint local = gl_GlobalInvocationID.x;
   TessellatedVertex c[3] = TessellatedVertex[3](loadCorner(local, triangle, 0), loadCorner(local, triangle, 1), loadCorner(local, triangle, 2));
-  int mask = finishAll != 0 ? 0 : splits[triangle].mask.x;
+  bool finishAll = runs[runIndex].finishAll != 0;
+  int mask = finishAll ? 0 : splits[triangle].mask.x;
   if (mask == 0) {
     // Undrawable ones are left out, as decide counted them; the last round, which decided nothing,
     // writes every triangle.
-    if (finishAll != 0 || (splits[triangle].mask.y & kDrawable) != 0) writeFinished(c[0], c[1], c[2]);
+    if (finishAll || (splits[triangle].mask.y & kDrawable) != 0) writeFinished(c[0], c[1], c[2]);
     return;
   }
   TessellatedVertex m[3] = TessellatedVertex[3](splits[triangle].midpoint[0], splits[triangle].midpoint[1], splits[triangle].midpoint[2]);
   const uint kChildren[4] = uint[4](0u, 2u, 3u, 4u);  // by number of split edges
-  uint child = atomicAdd(counters[2u * runIndex], kChildren[bitCount(mask)]);
+  uint child = atomicAdd(runs[runIndex].childrenPlaced, kChildren[bitCount(mask)]);
   int splitEdges = bitCount(mask);
   if (splitEdges == 3) {
     writeChild(child, c[0], m[0], m[2]);

@@ -1,44 +1,41 @@
-// What the kernels of a tessellation round share (tessellation-classify, -search, -decide): the
-// working triangles and where their corners come from, the edge bookkeeping, the frame's projection
-// and the errors of Szabo 2013, ch. 4. Each object of the round is one run of triangles
-// [firstTriangle, firstTriangle + triangleCount) and has its own request list and counters.
+// What the kernels of a tessellation round share (tessellation-classify, -search, -decide, -emit):
+// the working triangles and where their corners come from, the edge bookkeeping, the frame's
+// projection and the errors of Szabo 2013, ch. 4. Each reflected object of the part is one run
+// (common/tessellation-records.glsl): its triangles this round are [firstTriangle, firstTriangle +
+// triangleCount) of the working list, as the previous round's layout placed them on the GPU.
 #include "common/edge-split.glsl"
 #include "common/reflected-vertex-buffer.glsl"
+#include "common/tessellation-records.glsl"
 
-layout(std430, binding = 3) readonly buffer WorkingTriangles {
+layout(std430, binding = TESSELLATION_WORKING_BINDING) readonly buffer WorkingTriangles {
   TessellatedVertex records[];
 };
 // Round 0 reads the object's mesh and search slots instead: most triangles split nothing and then
 // never need copying into a working list.
-layout(std430, binding = 0) readonly buffer MeshVertices {
+layout(std430, binding = TESSELLATION_MESH_VERTICES_BINDING) readonly buffer MeshVertices {
   float meshVertex[];  // scene::Vertex: position xyz, normal xyz, uv — 8 floats
 };
-layout(std430, binding = 6) readonly buffer MeshIndices {
+layout(std430, binding = TESSELLATION_MESH_INDICES_BINDING) readonly buffer MeshIndices {
   uint meshIndex[];
 };
-layout(std430, binding = 4) buffer EdgeSplits {
+layout(std430, binding = TESSELLATION_SPLITS_BINDING) buffer EdgeSplits {
   EdgeSplit splits[];
 };
-// Edges whose midpoint needs a search, (triangle − firstTriangle) << 2 | edge; run r's list starts
+// Edges whose midpoint needs a search, (triangle − firstTriangle) << 2 | edge; a run's list starts
 // at 3 × its first triangle.
-layout(std430, binding = 7) buffer EdgeRequests {
+layout(std430, binding = TESSELLATION_REQUESTS_BINDING) buffer EdgeRequests {
   uint requests[];
 };
-struct RunRequests {
-  uint count;
-  uint searchGroups[3];  // the search's indirect dispatch for the run
-};
-layout(std430, binding = 8) buffer RequestCounts {
-  RunRequests runs[];
+layout(std430, binding = TESSELLATION_RUNS_BINDING) buffer TessellationRuns {
+  TessellationRun runs[];
 };
 
-uniform int fromMesh;        // 1 in round 0: corners from the mesh, not the working list
+uniform int fromMesh;   // 1 in round 0: corners from the mesh, not the working list
 uniform mat4 objectToWorld;
 uniform mat3 normalToWorld;
 uniform uint firstSlot;
-uniform uint firstTriangle;  // this object's triangles in the working list
-uniform uint triangleCount;
-uniform uint runIndex;       // this object's request list and pair of counters
+uniform uint runIndex;  // this object's run
+uniform uint parity;    // the round's work: runs[runIndex].work[parity]
 uniform int crackFree;       // 1: each edge decided alone; 0: Szabo's worst edge splits all three
 uniform int pixelMetric;     // 1: error in pixels; 0: Szabo's angle error
 uniform float threshold;

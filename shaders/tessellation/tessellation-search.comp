@@ -2,11 +2,11 @@
 // Round step 2, per requested edge of one object: its midpoint searched by the same search as scene
 // vertices, seeded between its ends' texels, and (pixel metric) its error. Runs only for the
 // requests, packed, so the large search code runs at full width.
-layout(local_size_x = 64) in;
-
 #include "common/search-core.glsl"
 #include "common/search-statistics.glsl"
 #include "tessellation/tessellation-round.glsl"
+
+layout(local_size_x = TESSELLATION_GROUP_SIZE) in;
 
 // The edge midpoint with its reflection searched; attributes interpolated symmetrically.
 TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
@@ -20,7 +20,8 @@ TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
 }
 
 void main() {
-  if (gl_GlobalInvocationID.x >= runs[runIndex].count) return;
+  if (gl_GlobalInvocationID.x >= runs[runIndex].requestCount) return;
+  uint firstTriangle = runs[runIndex].work[parity].first;
   uint request = requests[3u * firstTriangle + gl_GlobalInvocationID.x];
   uint local = request >> 2, triangle = firstTriangle + local;
   int e = int(request & 3u);

@@ -233,13 +233,15 @@
     if (!(threshold > 0)) { showStatus('threshold must be a positive number'); return; }
     send({ settings: {
       method: $('method').value, search: $('search').value, explosionMapSize: Number($('explosionMapSize').value),
-      virtualPixels: $('virtualPixels').value, extrusions: $('extrusions').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
+      virtualPixels: $('virtualPixels').value, extrusions: $('extrusions').value, rayCast: $('rayCast').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
       threshold, level: level === 0 ? -1 : level,
       jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value),
       stillSamples: Number($('stillSamples').value), interactiveSamples: Number($('interactiveSamples').value), ...nextInput(),
     } });
   }
-  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'extrusions', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale', 'stillSamples', 'interactiveSamples'])
+  // A search the user picks is what runs: the planner's ray cast is turned off with it.
+  $('search').addEventListener('change', () => { $('rayCast').value = 'RAY_CAST_NEVER'; });
+  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'extrusions', 'rayCast', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale', 'stillSamples', 'interactiveSamples'])
     $(id).addEventListener('change', sendSettings);
 
   function showSettings(settings) {
@@ -249,6 +251,7 @@
     set('explosionMapSize', settings.explosionMapSize);
     set('virtualPixels', settings.virtualPixels);
     set('extrusions', settings.extrusions);
+    set('rayCast', settings.rayCast);
     set('plan', settings.plan);
     set('tessellation', settings.tessellation);
     set('metric', settings.metric);

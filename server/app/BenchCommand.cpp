@@ -34,6 +34,10 @@ CommandLine benchOptions() {
       {"frames", "N", "warm frames measured after the cold one", "60"},
       {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
       {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
+      {"pass-timing", "HOW",
+       "per-pass (each pass timed: GPU timestamps, or on llvmpipe a glFinish after each, which slows the frame) | frame "
+       "(whole frames as served, no wait between passes; pass columns empty)",
+       "per-pass"},
       samplesOption(math::kStillFrameSamples, "samples a pixel of the still frame compared with the ray tracer (which takes the same): 1, 2, 4, 8 or 16"),
       {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
       {"json", "FILE", "JSON output", "bench.json"},
@@ -43,7 +47,7 @@ CommandLine benchOptions() {
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
-      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] [--samples N] "
+      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] [--pass-timing per-pass|frame] [--samples N] "
       "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
@@ -284,6 +288,10 @@ int runBench(std::span<const std::string> arguments) {
     std::tie(settings.coldWidth, settings.coldHeight) = *coldSize;
   }
   settings.reference = !options.has("no-reference");
+  const std::string passTiming = options.text("pass-timing");
+  if (passTiming != "per-pass" && passTiming != "frame")
+    return fail("--pass-timing expects per-pass or frame, got '" + passTiming + "'");
+  settings.passTiming = passTiming == "frame" ? render::PassTiming::FrameOnly : render::PassTiming::PerPass;
   auto samples = parseSamples(options);
   if (!samples) return fail(samples.error());
   settings.stillSamples = *samples;

@@ -7,7 +7,6 @@
 namespace specula::app {
 
 namespace {
-constexpr int kMaxLevel = 8;  // 4^8 = 65 536 triangles from one: the buffer cap stops it anyway
 // Without --threshold: the settings' default for pixels; for angles one as fine (checker-sphere,
 // `specula bench tessellation`).
 constexpr float kDefaultAngleThreshold = 0.003f;
@@ -45,7 +44,7 @@ Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine&
   } else if (settings.metric == passes::TessellationMetric::Angle) {
     settings.threshold = kDefaultAngleThreshold;
   }
-  auto level = options.integer("level", 0, kMaxLevel);
+  auto level = options.integer("level", 0, passes::kMaxTessellationLevel);
   if (!level) return Error{level.error()};
   settings.maxLevel = *level;
   return settings;
@@ -113,7 +112,8 @@ std::vector<OptionSpec> planOptions() {
        "needed"},
       {"ray-cast", "WHEN",
        "cheaper (a mirror part casts its pixels' reflected rays instead of searching when the planner's cost model, "
-       "measured on llvmpipe, predicts that cheaper) | never (search every part) | always",
+       "measured on llvmpipe, predicts that cheaper) | never (search every part) | always; a --search or --method "
+       "named on the command line is what runs: never unless given",
        "cheaper"},
       {"error-budget", "PX",
        "pixels the planner may move a reflection by: leaves out objects whose image in a convex part is smaller, shows a "
@@ -136,6 +136,9 @@ Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& 
   else if (rayCast == "never") settings.rayCast = passes::RayCastRule::Never;
   else if (rayCast == "always") settings.rayCast = passes::RayCastRule::Always;
   else return Error{"--ray-cast expects cheaper, never or always, got '" + rayCast + "'"};
+  // A search or method the user names is what runs, not a ray cast the cost model prefers.
+  const bool methodNamed = options.has("search") || (options.has("method") && options.text("method") == "explosion-map");
+  if (methodNamed && !options.has("ray-cast")) settings.rayCast = passes::RayCastRule::Never;
   auto budget = options.number("error-budget");
   if (!budget || !(*budget >= 0.0 && *budget <= passes::kMaxErrorBudgetPixels))
     return Error{"--error-budget expects pixels in [0, 16], got '" + options.text("error-budget") + "'"};

@@ -22,7 +22,8 @@ std::vector<OptionSpec> searchOptions();
 // Reads them into `settings`, or says which value is wrong and what it accepts.
 Status parseSearchOptions(const CommandLine& options, passes::ReflectionSettings& settings);
 
-// --plan and --ray-cast: what the frame plan leaves out and which mirror parts it ray-casts.
+// --plan and --ray-cast: what the frame plan leaves out and which mirror parts it ray-casts (none
+// when --search, or --method explosion-map, names the method and --ray-cast is not given).
 std::vector<OptionSpec> planOptions();
 
 // Reads them into `settings`, or says which value is wrong and what it accepts.

@@ -111,6 +111,8 @@ int runServe(std::span<const std::string> arguments) {
   auto interactiveSamples = parseSamples(options, "interactive-samples");
   passes::ReflectionSettings sessionReflection;  // every session starts with these
   const Status search = parseSearchOptions(options, sessionReflection);
+  // A search named here is what the sessions run, not a ray cast the cost model prefers.
+  if (options.has("search")) sessionReflection.rayCast = passes::RayCastRule::Never;
   for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
                                renderThreads ? Status{} : Error{renderThreads.error()},
                                encodeThreads ? Status{} : Error{encodeThreads.error()},

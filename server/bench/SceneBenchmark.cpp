@@ -181,6 +181,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   auto renderer = render::Renderer::create(context, scene);
   if (!renderer) return Error{renderer.error()};
   render::Renderer& r = **renderer;
+  r.setPassTiming(options.passTiming);
   const auto poseAt = [&](int frame) { return scene::ScenePose::at(*scene, frame / options.framesPerSecond); };
 
   // Frame 0 is cold: every vertex climbs the pyramid. Its wall time includes shader compilation.

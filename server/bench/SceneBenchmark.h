@@ -13,6 +13,7 @@
 #include "passes/FramePlan.h"
 #include "passes/ReflectionSettings.h"
 #include "render/FrameTimings.h"
+#include "render/Renderer.h"
 #include "scene/Scene.h"
 
 namespace specula::bench {
@@ -25,6 +26,9 @@ struct BenchOptions {
   bool reference = true;           // compare with the ray tracer (CPU; the slowest part)
   int stillSamples = math::kStillFrameSamples;  // the image comparison's anti-aliasing, both sides
   passes::ReflectionSettings reflection;  // defaults but for the plan options (the planner off, for comparison)
+  // Per pass by default (the per-pass columns); FrameOnly times whole frames as served, with no
+  // wait between passes (on llvmpipe a glFinish after each pass keeps the rasterizer from overlapping them).
+  render::PassTiming passTiming = render::PassTiming::PerPass;
 };
 
 struct StepStatistics {

@@ -7,10 +7,6 @@
 
 namespace specula::session {
 
-namespace {
-constexpr int kMaxTessellationLevel = 8;
-}  // namespace
-
 v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   v1::RenderSettings out;
   out.set_method(settings.reflection.method == passes::ReflectionMethod::Search ? v1::SEARCH : v1::NONE);
@@ -34,6 +30,11 @@ v1::RenderSettings settingsToProto(const SessionSettings& settings) {
     case passes::SearchStrategy::ExplosionMap:
       out.set_search(settings.reflection.explosionRefine ? v1::SEARCH_EXPLOSION_MAP_REFINED : v1::SEARCH_EXPLOSION_MAP);
       break;
+  }
+  switch (settings.reflection.rayCast) {
+    case passes::RayCastRule::WhenCheaper: out.set_ray_cast(v1::RAY_CAST_CHEAPER); break;
+    case passes::RayCastRule::Never: out.set_ray_cast(v1::RAY_CAST_NEVER); break;
+    case passes::RayCastRule::Always: out.set_ray_cast(v1::RAY_CAST_ALWAYS); break;
   }
   out.set_explosion_map_size(static_cast<std::uint32_t>(settings.reflection.explosionMapSize));
   out.set_virtual_pixels(settings.reflection.virtualPixels == passes::VirtualPixels::AsPlaced ? v1::PIXELS_AS_PLACED : v1::PIXELS_EXACT_HIT);
@@ -74,6 +75,15 @@ Status applySettingsUpdate(const v1::RenderSettings& update, SessionSettings& cu
     case v1::SEARCH_UNSPECIFIED: break;
     default: return Error{"settings: unknown search strategy"};
   }
+  // A search the client names is what runs, not a ray cast the cost model prefers.
+  if (update.search() != v1::SEARCH_UNSPECIFIED) settings.reflection.rayCast = passes::RayCastRule::Never;
+  switch (update.ray_cast()) {
+    case v1::RAY_CAST_CHEAPER: settings.reflection.rayCast = passes::RayCastRule::WhenCheaper; break;
+    case v1::RAY_CAST_NEVER: settings.reflection.rayCast = passes::RayCastRule::Never; break;
+    case v1::RAY_CAST_ALWAYS: settings.reflection.rayCast = passes::RayCastRule::Always; break;
+    case v1::RAY_CAST_UNSPECIFIED: break;
+    default: return Error{"settings: unknown ray_cast rule"};
+  }
   if (update.explosion_map_size() != 0) {
     if (update.explosion_map_size() < static_cast<std::uint32_t>(passes::kMinExplosionMapSize) ||
         update.explosion_map_size() > static_cast<std::uint32_t>(passes::kMaxExplosionMapSize))
@@ -105,7 +115,8 @@ Status applySettingsUpdate(const v1::RenderSettings& update, SessionSettings& cu
     t.threshold = update.threshold();
   }
   if (update.level() != 0) {
-    if (update.level() < -1 || update.level() > kMaxTessellationLevel) return Error{"settings: level must be 0..8 (-1 for 0)"};
+    if (update.level() < -1 || update.level() > passes::kMaxTessellationLevel)
+      return Error{"settings: level must be 0.." + std::to_string(passes::kMaxTessellationLevel) + " (-1 for 0)"};
     t.maxLevel = std::max(0, update.level());
   }
   if (update.error_budget_px() != 0.0f) {

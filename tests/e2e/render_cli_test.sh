@@ -66,6 +66,14 @@ check "... and runs no search" bash -c "! grep -q ' search ' <<<'$output'"
 output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast never --out "$work/p0.png" 2>&1)
 check "--ray-cast never searches every mirror" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
 fails_with "an unknown ray-cast rule is refused by name" "--ray-cast expects cheaper, never or always, got 'sometimes'" render --ray-cast sometimes
+# A search or method the user names is what runs; the cost model chooses only by default.
+for named in "--search hierarchy" "--search crosshair" "--method explosion-map"; do
+  output=$("$specula" render --scene checker-sphere --size 96x72 $named --out "$work/named.png" 2>&1)
+  check "$named runs the search, not the ray cast the cost model prefers" \
+    grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
+done
+output=$("$specula" render --scene checker-sphere --size 96x72 --search hierarchy --ray-cast cheaper --out "$work/named.png" 2>&1)
+check "--ray-cast given beside --search is obeyed" grep -q "part 0 (convex, ~[0-9]* px): ray-cast 1 objects" <<<"$output"
 check "a searched mirror says how many uncovered pixels it ray-cast" grep -q "behind it or in its shadow); 0 objects (0 vertices) under the 0.5 px error budget; [0-9]* uncovered pixels ray-cast" <<<"$output"
 output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast never --uncovered background --out "$work/pb.png" 2>&1)
 check "--uncovered background ray-casts none" grep -q "; 0 uncovered pixels ray-cast" <<<"$output"

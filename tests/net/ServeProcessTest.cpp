@@ -121,6 +121,7 @@ TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
   }
   ASSERT_TRUE(welcome);
   EXPECT_EQ(welcome->settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
+  EXPECT_EQ(welcome->settings().ray_cast(), v1::RAY_CAST_NEVER) << "the search named is what the sessions run";
   EXPECT_EQ(welcome->settings().explosion_map_size(), 128u);
   EXPECT_EQ(welcome->settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
   EXPECT_EQ(welcome->settings().extrusions(), v1::EXTRUSIONS_SEARCH);

@@ -266,6 +266,20 @@ TEST(FramePlan, AnErrorBudgetOutOfRangeIsRefusedByName) {
   }
 }
 
+// The tessellation's GPU records hold a draw per round: a deeper level than the one limit is refused.
+TEST(FramePlan, TheTessellationLevelIsBounded) {
+  passes::ReflectionSettings settings;
+  for (int level : {0, passes::kMaxTessellationLevel}) {
+    settings.tessellation.maxLevel = level;
+    EXPECT_FALSE(passes::reflectionSettingsProblem(settings)) << level;
+  }
+  for (int level : {-1, passes::kMaxTessellationLevel + 1}) {
+    settings.tessellation.maxLevel = level;
+    ASSERT_TRUE(passes::reflectionSettingsProblem(settings)) << level;
+    EXPECT_NE(passes::reflectionSettingsProblem(settings)->find("tessellation level"), std::string::npos);
+  }
+}
+
 // An image in a convex mirror is never larger than the object seen along the eye-mirror-object path,
 // stretched as far off the view axis as the mirror reaches, nor than the mirror as drawn.
 TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {

@@ -70,6 +70,11 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"unsolved", std::to_string(r.unsolvedPerFrame)});
   f.push_back({"mirror_parts", std::to_string(r.plannedParts)});
   f.push_back({"ray_cast_parts", std::to_string(r.rayCastParts)});
+  const auto& planner = r.planner;
+  f.push_back({"planner_rate_search", planner ? number(planner->rates.search, 3) : ""});
+  f.push_back({"planner_rate_cast", planner ? number(planner->rates.rayCast, 3) : ""});
+  f.push_back({"planner_predicted_ms", planner ? number(planner->predicted.search + planner->predicted.rayCast, 2) : ""});
+  f.push_back({"planner_took_ms", planner ? number(planner->took.search + planner->took.rayCast, 2) : ""});
   f.push_back({"culled_vertices", std::to_string(r.culledVertices)});
   f.push_back({"below_budget_vertices", std::to_string(r.belowBudgetVertices)});
   f.push_back({"uncovered_ray_cast_px", std::to_string(r.uncoveredRayCast)});
@@ -374,6 +379,13 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
              std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
              " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
              std::to_string(r.castTiles.possible) + " object tiles\n";
+    if (r.planner) {
+      const auto& p = *r.planner;
+      table += "  planner (last measured frame): searching predicted " + number(p.predicted.search, 1) + " ms, took " +
+               number(p.took.search, 1) + "; ray-casting predicted " + number(p.predicted.rayCast, 1) + " ms, took " +
+               number(p.took.rayCast, 1) + "; this device's rates over the llvmpipe fit: searching " + number(p.rates.search, 2) +
+               ", ray-casting " + number(p.rates.rayCast, 2) + "\n";
+    }
     if (!r.stillFrames.empty()) {
       std::string still = "  still frames (last pose, samples a pixel: ms):";
       for (const SceneBenchResult::StillFrame& s : r.stillFrames) still += " " + std::to_string(s.samples) + ": " + number(s.milliseconds, 1) + ";";

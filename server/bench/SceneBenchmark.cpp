@@ -217,6 +217,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
     timings.push_back(rendered->timings);
     totals.push_back(rendered->timings.totalMilliseconds);
     addPointErrors(*rendered);
+    if (rendered->planner.measured && !rendered->planner.explored) result.planner = rendered->planner;
     last = std::move(*rendered);
   }
   result.warmSteps = warmSteps.result();

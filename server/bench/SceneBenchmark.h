@@ -55,6 +55,9 @@ struct SceneBenchResult {
   std::optional<StepStatistics> coldStepsLarge;  // cold at BenchOptions::coldWidth × coldHeight
   unsigned searchedPerFrame = 0, hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's
   // The last frame's plan: visible mirror parts, those ray-cast, and reflected vertices left out.
+  // The planner's last frame measured for it with the method it chose (not an exploration): its
+  // rates, and what that frame's methods were predicted to cost and took (RenderedFrame::planner).
+  std::optional<render::RenderedFrame::PlannerCosts> planner;
   std::size_t plannedParts = 0, rayCastParts = 0, culledVertices = 0;
   std::size_t belowBudgetVertices = 0;  // last frame: of objects whose image is under the error budget
   std::size_t uncoveredRayCast = 0;  // last frame: pixels no virtual object covered, ray-cast instead

@@ -147,7 +147,8 @@ bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, do
 }
 
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
-                    glm::ivec2 frameSize, const ReflectionSettings& settings) {
+                    glm::ivec2 frameSize, const ReflectionSettings& settings, const CostRates& rates,
+                    std::optional<PartMethod> explore) {
   const math::Camera& camera = pose.camera;
   const float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
   FramePlan plan;
@@ -168,7 +169,7 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
       method = PartMethod::OwnColour;
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but draws nothing.
-    PlannedMirror planned{&mirror, method, pixels, {}, {}, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    PlannedMirror planned{&mirror, method, pixels, {}, {}, {}, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
     for (const ReflectionSlotRange& range : mirror.reflected) {
       const math::Bounds& objectBounds = worldBounds[range.object];
       if (!everything && (planned.facesAway || !canAppearIn(mirror.reach, mirrorToWorld, objectBounds, camera.eye))) {
@@ -183,10 +184,12 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
         planned.reflected.push_back(&range);
       }
     }
-    planned.cost = predictPartCost(pixels, planned.reflected);
+    planned.fittedCost = predictPartCost(pixels, planned.reflected);
+    planned.cost = {planned.fittedCost.search * rates.search, planned.fittedCost.rayCast * rates.rayCast};
     if (method == PartMethod::VirtualObjects && search && !everything &&
         (settings.rayCast == RayCastRule::Always ||
-         (settings.rayCast == RayCastRule::WhenCheaper && planned.cost.rayCast < planned.cost.search)))
+         (settings.rayCast == RayCastRule::WhenCheaper &&
+          (explore ? *explore == PartMethod::RayCast : planned.cost.rayCast < planned.cost.search))))
       method = planned.method = PartMethod::RayCast;
     for (const ReflectionSlotRange* range : planned.reflected) {
       const glm::mat3 linear(pose.objectToWorld[range->object]);

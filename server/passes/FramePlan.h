@@ -24,21 +24,27 @@ enum class PartMethod {
 // "virtual-objects", "ray-cast", "own-colour" or "environment-map", as render, bench and the protocol name them.
 const char* partMethodName(PartMethod method);
 
-// What a mirror part's reflection is predicted to cost by each method, in milliseconds on llvmpipe:
-// only their ratio decides. A GPU's ratio has not been measured.
 // A ray-cast part's tile classification: object tiles cast on, of objects × the part's tiles (all
 // `possible` where the part was not classified).
 struct CastTileCount {
   std::size_t listed = 0, possible = 0;
 };
 
+// What a mirror part's reflection costs by each method, in milliseconds.
 struct PartCost {
   double search = 0.0;   // search, tessellation and virtual objects
   double rayCast = 0.0;  // a cast per pixel and reflected object
 };
 
-// The cost model behind RayCastRule::WhenCheaper, for a part covering about `pixels` frame pixels.
+// The cost model behind RayCastRule::WhenCheaper, for a part covering about `pixels` frame pixels,
+// in milliseconds on the llvmpipe it was fitted to.
 PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRange*>& reflected);
+
+// Per-device multipliers of predictPartCost()'s milliseconds, learnt from frames rendered there
+// (passes::MeasuredCosts); 1 is the fit itself.
+struct CostRates {
+  double search = 1.0, rayCast = 1.0;
+};
 
 // A mirror part whose reflection is drawn this frame, and the reflected objects that can appear in it.
 struct PlannedMirror {
@@ -49,7 +55,8 @@ struct PlannedMirror {
   // Per entry of `reflected`: whether tessellation may split it; one whose every edge's image stays
   // shorter than the threshold (edgesStayUnsplit) is drawn from its mesh without a round.
   std::vector<bool> tessellated;
-  PartCost cost;  // of the objects in `reflected`: what chose between searching and casting
+  PartCost fittedCost;  // of the objects in `reflected`, by predictPartCost() (llvmpipe milliseconds)
+  PartCost cost;        // the same on this device (fittedCost × CostRates): what chose between searching and casting
   bool facesAway = false;  // the eye is behind every tangent plane of the part: nothing is searched
   std::size_t culledObjects = 0, culledVertices = 0;  // left out: behind the part or in its shadow
   // Left out because their image in this convex part, or the whole part (OwnColour), is smaller on
@@ -75,10 +82,12 @@ bool halfFloatsResolve(const math::Bounds& mirrorBounds);
 
 // worldBounds: one box per scene object at this frame's pose. With settings.plan Needed, a mirror
 // out of the frustum is left out, and so is a reflected object that cannot appear in a part
-// (passes::canAppearIn); a part is ray-cast by settings.rayCast (where predictPartCost() says it is
-// cheaper, by default). Everything keeps every mirror and object and searches them all.
+// (passes::canAppearIn); a part is ray-cast by settings.rayCast (by default where predictPartCost()
+// scaled by `rates` says it is cheaper; with `explore`, every part the cost decides for takes that
+// method, to measure it). Everything keeps every mirror and object and searches them all.
 FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
-                    glm::ivec2 frameSize, const ReflectionSettings& settings);
+                    glm::ivec2 frameSize, const ReflectionSettings& settings, const CostRates& rates = {},
+                    std::optional<PartMethod> explore = std::nullopt);
 
 // Frame pixels the box's enclosing sphere covers, about (all of them when the eye is inside it).
 double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, glm::ivec2 frameSize);

@@ -118,17 +118,22 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   if (auto problem = passes::reflectionSettingsProblem(settings)) return Error{"cannot render: " + *problem};
   if (auto problem = math::sampleCountProblem(samples)) return Error{"cannot render: " + *problem};
   const Clock::time_point start = Clock::now();
+  // The planner learns its rates where it chooses (RayCastRule::WhenCheaper), from one-sample frames.
+  const bool learning = settings.rayCast == passes::RayCastRule::WhenCheaper && settings.plan == passes::PlanScope::Needed &&
+                        settings.method == passes::ReflectionMethod::Search && samples == 1;
+  const passes::MeasuredCosts::FrameRole role = learning ? costs_.nextFrame() : passes::MeasuredCosts::FrameRole{};
   // A frame whose tessellation outgrew its lists is drawn again once they have grown (a few times at
   // most, each growing them by half again up to their cap), so no frame is coarser for it.
   for (;;) {
     bool outgrown = false;
-    Result<RenderedFrame> frame = renderOnce(pose, width, height, settings, samples, start, outgrown);
+    Result<RenderedFrame> frame = renderOnce(pose, width, height, settings, samples, role, start, outgrown);
     if (!frame || !outgrown) return frame;
   }
 }
 
 Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int width, int height,
-                                           const passes::ReflectionSettings& settings, int samples, Clock::time_point start,
+                                           const passes::ReflectionSettings& settings, int samples,
+                                           passes::MeasuredCosts::FrameRole role, Clock::time_point start,
                                            bool& tessellationOutgrown) {
   const gl::GlApi& gl = context_.api();
   if (!target_ || target_->width() != width || target_->height() != height) {
@@ -144,7 +149,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
     worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
-  const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, {width, height}, settings);
+  const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, {width, height}, settings, costs_.rates(), role.explore);
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
@@ -157,7 +162,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
   // or on a CPU rasterizer, which runs a pass's draws only when a later command flushes them
   // (timestamps there charged the scene pass's rasterization to whichever pass came last), the
   // wall clock after the pass has finished. PassTiming::FrameOnly names the stages and times the frame.
-  const bool timePasses = passTiming_ == PassTiming::PerPass;
+  const bool timePasses = passTiming_ == PassTiming::PerPass || role.measure;
   std::vector<std::string_view> stages;  // stage i ran between marks i and i + 1
   std::vector<double> wallMarks;
   std::size_t marks = 0;
@@ -216,7 +221,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
       plan.tessellate ? readback_.copy(tessellation.midpointStatistics(), sizeof(passes::SearchStatistics)) : 0;
   if (virtualObjectsRan) virtualObjects_->queueStatistics(readback_);
   readback_.fence();
-  RenderedFrame result{width, height, samples, target_->readRgba(), {}, {}, {}, frame.view, {}, plan.gbufferPrecision, {}};
+  RenderedFrame result{width, height, samples, target_->readRgba(), {}, {}, {}, frame.view, {}, plan.gbufferPrecision, {}, {}};
   if (!readback_.wait()) return Error{"the GPU did not finish the frame (driver: " + context_.info().renderer + ")"};
   for (const passes::PlannedMirror& mirror : plan.mirrors) {
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
@@ -260,10 +265,40 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
     if (found == result.timings.stages.end()) found = result.timings.stages.insert(found, {std::string(stages[i]), 0.0});
     found->milliseconds += times[i + 1] - times[i];
   }
+  result.planner.rates = costs_.rates();
+  result.planner.explored = role.explore.has_value();
+  if (role.measure) learnCosts(plan, result);
   if (const GLenum error = gl.GetError(); error != GL_NO_ERROR)
     return Error{"GL error 0x" + std::to_string(error) + " while rendering (driver: " + context_.info().renderer + ")"};
   result.timings.totalMilliseconds = millisecondsSince(start);
   return result;
+}
+
+void Renderer::learnCosts(const passes::FramePlan& plan, RenderedFrame& frame) {
+  passes::PartCost fitted;
+  RenderedFrame::PlannerCosts& planner = frame.planner;
+  for (const passes::PlannedMirror& mirror : plan.mirrors) {
+    if (mirror.method == passes::PartMethod::VirtualObjects) {
+      fitted.search += mirror.fittedCost.search;
+      planner.predicted.search += mirror.cost.search;
+    } else if (mirror.method == passes::PartMethod::RayCast) {
+      fitted.rayCast += mirror.fittedCost.rayCast;
+      planner.predicted.rayCast += mirror.cost.rayCast;
+    }
+  }
+  // The search's own passes are searching; the virtual-objects pass draws the searched parts and
+  // casts the others, and is shared between them as the prediction shares it.
+  double searching = 0.0, drawing = 0.0;
+  for (const StageTiming& stage : frame.timings.stages) {
+    if (stage.name == "virtual-objects") drawing += stage.milliseconds;
+    for (const char* name : {"gbuffer-pyramid", "ray-hierarchy", "explosion-map", "search", "tessellation"})
+      if (stage.name == name) searching += stage.milliseconds;
+  }
+  const double predictedTotal = planner.predicted.search + planner.predicted.rayCast;
+  const double searchShare = predictedTotal > 0.0 ? planner.predicted.search / predictedTotal : 0.0;
+  planner.took = {fitted.search > 0.0 ? searching + drawing * searchShare : 0.0, drawing * (1.0 - searchShare)};
+  planner.measured = true;
+  costs_.observe(fitted, planner.took);
 }
 
 }  // namespace specula::render

@@ -17,6 +17,7 @@
 #include "gl/RenderTarget.h"
 #include "math/Bounds.h"
 #include "passes/FrameContext.h"
+#include "passes/MeasuredCosts.h"
 #include "passes/Pass.h"
 #include "passes/PatchTessellation.h"
 #include "passes/ReflectionResources.h"
@@ -63,6 +64,14 @@ struct RenderedFrame {
   // What the G-buffer used: RGBA16F falls back to RGBA32F for mirrors far from the origin.
   passes::GBufferPrecision gbufferPrecision = passes::GBufferPrecision::Float32;
   std::vector<MirrorPlanSummary> plan;  // per visible mirror part, a mirror's parts in a row
+  // The planner on this device (passes::MeasuredCosts): the rates its plan used and, on a frame it
+  // measured, what the parts' methods were predicted to cost (those rates) and took, per method.
+  struct PlannerCosts {
+    passes::CostRates rates;
+    bool measured = false;  // timed pass by pass for the planner
+    bool explored = false;  // every part took the method the planner did not choose
+    passes::PartCost predicted, took;
+  } planner;
 };
 
 // How a frame's stages are timed.
@@ -120,7 +129,10 @@ class Renderer {
   // One try at render(): `tessellationOutgrown` says the frame's tessellation found its lists too
   // small (they have grown since) and the frame is to be drawn again.
   Result<RenderedFrame> renderOnce(const scene::ScenePose& pose, int width, int height, const passes::ReflectionSettings& settings,
-                                   int samples, Clock::time_point start, bool& tessellationOutgrown);
+                                   int samples, passes::MeasuredCosts::FrameRole role, Clock::time_point start,
+                                   bool& tessellationOutgrown);
+  // Teaches costs_ what a measured frame's methods took, from its pass times.
+  void learnCosts(const passes::FramePlan& plan, RenderedFrame& frame);
 
   gl::GlContext& context_;
   std::shared_ptr<const scene::Scene> scene_;
@@ -136,6 +148,7 @@ class Renderer {
   gl::GpuReadback readback_;                 // the frame's statistics
   std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
   PassTiming passTiming_ = PassTiming::PerPass;
+  passes::MeasuredCosts costs_;              // the planner's rates on this device
   std::optional<passes::PatchTessellationProbe> patchProbe_;  // built on first use
   bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock
 };

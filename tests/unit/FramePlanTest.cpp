@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "passes/FramePlan.h"
+#include "passes/MeasuredCosts.h"
 #include "scene/Primitives.h"
 #include "scene/ScenePose.h"
 #include "scene/builtin/BuiltinScenes.h"
@@ -475,4 +476,87 @@ TEST(FramePlan, AMirrorReflectingOnlyFarSurroundingsUsesTheEnvironmentMapWithinT
                 .mirrors[0]
                 .method,
             passes::PartMethod::VirtualObjects);
+}
+
+// The planner measures the device: fed the times of a fake device on which searching is fifty times
+// cheaper than the llvmpipe fit, it switches the kitchen's bowl to virtual objects within a few
+// frames, predicts what it runs to within 25 %, and switches back when casting becomes the cheaper.
+TEST(MeasuredCosts, ThePlanFollowsTheDeviceWithinAFewFramesAndBack) {
+  const scene::Scene scene = *scene::makeBuiltinScene("kitchen");
+  const auto slots = passes::ReflectionSlots::forScene(scene);
+  const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
+  const auto bounds = worldBounds(scene, pose);
+  const passes::ReflectionSettings planned;  // RayCastRule::WhenCheaper
+  passes::MeasuredCosts costs;
+  // The fake device: what each method takes, as a multiple of the fit.
+  passes::CostRates device{0.02, 1.0};
+  std::vector<passes::PartMethod> chosen;  // per frame the planner chose (exploration frames left out)
+  double predicted = 0.0, took = 0.0;      // the last chosen frame's, summed over its parts
+  const auto runFrames = [&](int frames) {
+    for (int i = 0; i < frames; ++i) {
+      const passes::MeasuredCosts::FrameRole role = costs.nextFrame();
+      const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, glm::ivec2(640, 480), planned, costs.rates(), role.explore);
+      ASSERT_FALSE(plan.mirrors.empty());
+      passes::PartCost fitted, measured;
+      predicted = took = 0.0;
+      for (const passes::PlannedMirror& mirror : plan.mirrors) {
+        const bool searched = mirror.method == passes::PartMethod::VirtualObjects;
+        ASSERT_TRUE(searched || mirror.method == passes::PartMethod::RayCast);
+        (searched ? fitted.search : fitted.rayCast) += searched ? mirror.fittedCost.search : mirror.fittedCost.rayCast;
+        (searched ? measured.search : measured.rayCast) +=
+            searched ? mirror.fittedCost.search * device.search : mirror.fittedCost.rayCast * device.rayCast;
+        predicted += searched ? mirror.cost.search : mirror.cost.rayCast;
+      }
+      took = measured.search + measured.rayCast;
+      if (role.measure) costs.observe(fitted, measured);
+      if (!role.explore) chosen.push_back(plan.mirrors[0].method);
+      else EXPECT_EQ(plan.mirrors[0].method, *role.explore);
+    }
+  };
+  // The fit alone ray-casts the bowl: the first frame says so.
+  runFrames(1);
+  ASSERT_EQ(chosen.front(), passes::PartMethod::RayCast);
+  runFrames(9);
+  EXPECT_EQ(chosen.back(), passes::PartMethod::VirtualObjects) << "after 10 frames, searching is known to be cheaper";
+  EXPECT_NEAR(predicted, took, 0.25 * took) << "the prediction of what it runs";
+  device = {10.0, 1.0};  // now searching is the dearer
+  runFrames(40);
+  EXPECT_EQ(chosen.back(), passes::PartMethod::RayCast) << "the measured search's cost turns the plan back";
+  EXPECT_NEAR(predicted, took, 0.25 * took);
+}
+
+TEST(MeasuredCosts, AMeasurementMovesOnlyTheRatesOfTheMethodsThatRan) {
+  passes::MeasuredCosts costs;
+  costs.observe({10.0, 0.0}, {5.0, 0.0});
+  EXPECT_EQ(costs.rates().search, 0.5) << "the first measurement replaces the fit";
+  EXPECT_EQ(costs.rates().rayCast, 1.0);
+  costs.observe({10.0, 0.0}, {15.0, 0.0});
+  EXPECT_EQ(costs.rates().search, 0.5 + passes::MeasuredCosts::kLearningRate * (1.5 - 0.5)) << "later ones move it part way";
+  costs.observe({0.0, 4.0}, {0.0, 400000.0});  // an outlier moves a rate only so far
+  EXPECT_GT(costs.rates().rayCast, 1.0);
+  EXPECT_LE(costs.rates().rayCast, 1e3);
+  const double before = costs.rates().search;
+  costs.observe({10.0, 0.0}, {std::nan(""), 0.0});
+  EXPECT_EQ(costs.rates().search, before) << "a time that is not a number teaches nothing";
+}
+
+TEST(MeasuredCosts, AnExplorationMeasuresTheMethodMeasuredLongestAgo) {
+  passes::MeasuredCosts costs;
+  EXPECT_FALSE(costs.nextFrame().measure) << "frame 0: shader compilation, not the device";
+  ASSERT_TRUE(costs.nextFrame().measure);
+  costs.observe({0.0, 4.0}, {0.0, 8.0});  // frame 1 ray-cast everything
+  const passes::MeasuredCosts::FrameRole second = costs.nextFrame();
+  ASSERT_TRUE(second.explore);
+  EXPECT_EQ(*second.explore, passes::PartMethod::VirtualObjects);
+  costs.observe({6.0, 0.0}, {3.0, 0.0});
+  int frame = 3;
+  for (; frame < passes::MeasuredCosts::kExploreEvery; ++frame) {
+    const passes::MeasuredCosts::FrameRole role = costs.nextFrame();
+    EXPECT_FALSE(role.explore) << frame;
+    EXPECT_EQ(role.measure, frame % passes::MeasuredCosts::kMeasureEvery == 0) << frame;
+    if (role.measure) costs.observe({6.0, 0.0}, {3.0, 0.0});  // the plan searches now
+  }
+  const passes::MeasuredCosts::FrameRole explored = costs.nextFrame();
+  ASSERT_TRUE(explored.explore);
+  EXPECT_EQ(*explored.explore, passes::PartMethod::RayCast) << "casting was measured longest ago";
 }

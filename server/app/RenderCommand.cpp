@@ -163,7 +163,7 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     std::snprintf(line, sizeof line,
                   "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left out "
                   "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast; cast on %zu of "
-                  "%zu object tiles; predicted: searching %.1f ms, ray-casting %.1f ms (the llvmpipe fit times this device's rates "
+                  "%zu object tiles; predicted: searching %.1f ms, ray-casting %.1f ms (the llvmpipe fit times the rates measured here, "
                   "%.2f, %.2f)\n",
                   scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
                   methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,

@@ -16,7 +16,7 @@ class EnvironmentMapPass final : public Pass {
  public:
   static Result<std::unique_ptr<EnvironmentMapPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "environment-map"; }
+  PassId id() const override { return PassId::EnvironmentMap; }
   void execute(const FrameContext& frame) override;
 
  private:

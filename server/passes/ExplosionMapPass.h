@@ -20,7 +20,7 @@ class ExplosionMapPass final : public Pass {
  public:
   static Result<std::unique_ptr<ExplosionMapPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "explosion-map"; }
+  PassId id() const override { return PassId::ExplosionMap; }
   void execute(const FrameContext& frame) override;
 
  private:

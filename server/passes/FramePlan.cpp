@@ -152,7 +152,7 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   const math::Camera& camera = pose.camera;
   const float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
   FramePlan plan;
-  plan.passes.push_back("scene");
+  plan.passes.push_back(PassId::Scene);
   if (settings.method == ReflectionMethod::None) return plan;
   const bool everything = settings.plan == PlanScope::Everything;
   for (const MirrorSlots& mirror : slots.mirrors) {
@@ -223,10 +223,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   for (const PlannedMirror& mirror : plan.mirrors)
     if (!halfFloatsResolve(worldBounds[mirror.slots->mirrorObject])) plan.gbufferPrecision = GBufferPrecision::Float32;
   if (settings.method == ReflectionMethod::EnvironmentMap) {
-    plan.passes.insert(plan.passes.end(), {"mirror-gbuffer", "environment-map"});
+    plan.passes.insert(plan.passes.end(), {PassId::MirrorGBuffer, PassId::EnvironmentMap});
     return plan;
   }
-  plan.passes.push_back("mirror-gbuffer");
+  plan.passes.push_back(PassId::MirrorGBuffer);
   // Searching (and so its pyramid or ray hierarchy, and tessellation) only for parts drawn as virtual objects.
   plan.search = std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
                             [](const PlannedMirror& mirror) { return mirror.method == PartMethod::VirtualObjects; });
@@ -234,25 +234,27 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
   const bool strategyNeeded = std::any_of(plan.mirrors.begin(), plan.mirrors.end(), [&](const PlannedMirror& mirror) {
     return mirror.method == PartMethod::VirtualObjects && !(settings.solveExtrusions && mirror.slots->extrusion);
   });
-  if (plan.search && !strategyNeeded) plan.passes.push_back("search");
+  if (plan.search && !strategyNeeded) plan.passes.push_back(PassId::Search);
   if (strategyNeeded)
     switch (settings.search) {
-      case SearchStrategy::Crosshair: plan.passes.insert(plan.passes.end(), {"gbuffer-pyramid", "search"}); break;
-      case SearchStrategy::Hierarchy: plan.passes.insert(plan.passes.end(), {"ray-hierarchy", "search"}); break;
+      case SearchStrategy::Crosshair: plan.passes.insert(plan.passes.end(), {PassId::GBufferPyramid, PassId::Search}); break;
+      case SearchStrategy::Hierarchy: plan.passes.insert(plan.passes.end(), {PassId::RayHierarchy, PassId::Search}); break;
       case SearchStrategy::ExplosionMap:
         // The refinement's climb falls back to the pyramid's cold start where the map's point is off the part.
-        plan.passes.push_back("explosion-map");
-        if (settings.explosionRefine) plan.passes.push_back("gbuffer-pyramid");
-        plan.passes.push_back("search");
+        plan.passes.push_back(PassId::ExplosionMap);
+        if (settings.explosionRefine) plan.passes.push_back(PassId::GBufferPyramid);
+        plan.passes.push_back(PassId::Search);
         break;
     }
   plan.tessellate = plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
-  if (plan.tessellate) plan.passes.push_back("tessellation");
-  plan.passes.push_back("virtual-objects");
+  if (plan.tessellate) plan.passes.push_back(PassId::Tessellation);
+  plan.passes.push_back(PassId::VirtualObjects);
   // After the virtual objects: they ray-cast the pixels the cube map cannot serve.
   if (std::any_of(plan.mirrors.begin(), plan.mirrors.end(),
                   [](const PlannedMirror& mirror) { return mirror.method == PartMethod::EnvironmentMap; }))
-    plan.passes.push_back("environment-map");
+    plan.passes.push_back(PassId::EnvironmentMap);
+  plan.needs = {settings.search, settings.explosionRefine, strategyNeeded, plan.search, plan.tessellate};
+  plan.passes = cullUnread(plan.passes, plan.needs);
   return plan;
 }
 

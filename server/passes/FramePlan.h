@@ -7,6 +7,7 @@
 
 #include "math/Bounds.h"
 #include "math/Camera.h"
+#include "passes/FrameGraph.h"
 #include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
 #include "scene/ScenePose.h"
@@ -68,7 +69,8 @@ struct PlannedMirror {
 };
 
 struct FramePlan {
-  std::vector<std::string_view> passes;         // pass names in execution order
+  std::vector<PassId> passes;                   // in execution order, none whose output nothing reads
+  FrameNeeds needs;                             // what decides some passes' reads (FrameGraph)
   std::vector<PlannedMirror> mirrors;           // visible mirror parts, a mirror's parts in a row
   bool search = false;                          // some part is drawn as virtual objects: the search runs
   bool tessellate = false;                      // virtual objects come from the tessellation pass

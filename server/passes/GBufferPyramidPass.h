@@ -13,7 +13,7 @@ class GBufferPyramidPass final : public Pass {
  public:
   static Result<std::unique_ptr<GBufferPyramidPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "gbuffer-pyramid"; }
+  PassId id() const override { return PassId::GBufferPyramid; }
   void execute(const FrameContext& frame) override;
 
  private:

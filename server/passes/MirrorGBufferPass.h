@@ -20,7 +20,7 @@ class MirrorGBufferPass final : public Pass {
  public:
   static Result<std::unique_ptr<MirrorGBufferPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "mirror-gbuffer"; }
+  PassId id() const override { return PassId::MirrorGBuffer; }
   void execute(const FrameContext& frame) override;
 
  private:

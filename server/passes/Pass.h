@@ -4,13 +4,15 @@
 #include <string_view>
 
 #include "passes/FrameContext.h"
+#include "passes/FrameGraph.h"
 
 namespace specula::passes {
 
 class Pass {
  public:
   virtual ~Pass() = default;
-  virtual std::string_view name() const = 0;  // same as its shaders/ folder
+  virtual PassId id() const = 0;
+  std::string_view name() const { return passName(id()); }  // same as its shaders/ folder
   virtual void execute(const FrameContext& frame) = 0;
 };
 

@@ -13,7 +13,7 @@ class RayHierarchyPass final : public Pass {
  public:
   static Result<std::unique_ptr<RayHierarchyPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "ray-hierarchy"; }
+  PassId id() const override { return PassId::RayHierarchy; }
   void execute(const FrameContext& frame) override;
 
  private:

@@ -16,7 +16,7 @@ class ScenePass final : public Pass {
  public:
   static Result<std::unique_ptr<ScenePass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "scene"; }
+  PassId id() const override { return PassId::Scene; }
   void execute(const FrameContext& frame) override;
 
  private:

@@ -22,7 +22,7 @@ class SearchPass final : public Pass {
  public:
   static Result<std::unique_ptr<SearchPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "search"; }
+  PassId id() const override { return PassId::Search; }
   void execute(const FrameContext& frame) override;
 
  private:

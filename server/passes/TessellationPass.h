@@ -20,7 +20,7 @@ class TessellationPass final : public Pass {
  public:
   static Result<std::unique_ptr<TessellationPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "tessellation"; }
+  PassId id() const override { return PassId::Tessellation; }
   void execute(const FrameContext& frame) override;
 
  private:

@@ -73,7 +73,7 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMir
   const TessellationBuffers& tessellation = frame.reflections.tessellation();
   const std::vector<TessellatedRun>& runs = tessellation.frameRuns();
   gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, tessellation.draws());
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tessellation.finished());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, VIRTUAL_OBJECTS_TRIANGLES_BINDING, tessellation.finished());
   const auto rounds = static_cast<GLsizei>(frame.settings.tessellation.maxLevel + 1);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (runs[i].mirror != mirror.slots) continue;  // another mirror, or another part of this one

@@ -19,7 +19,7 @@ class VirtualObjectsPass final : public Pass {
  public:
   static Result<std::unique_ptr<VirtualObjectsPass>> create(const gl::GlApi& gl);
 
-  std::string_view name() const override { return "virtual-objects"; }
+  PassId id() const override { return PassId::VirtualObjects; }
   void execute(const FrameContext& frame) override;
   // What the last frame's plan did per part, queued on `readback` after the frame's passes and read
   // from it once it has waited.

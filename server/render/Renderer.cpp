@@ -35,12 +35,11 @@ constexpr float kNearFarRatio = 1.0f / 2000.0f;
 
 // `kept`, when given, keeps a typed pointer to the pass for what the renderer reads back from it.
 template <class P>
-Status addPass(std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>>& passes, Result<std::unique_ptr<P>> pass,
-               P** kept = nullptr) {
+Status addPass(Renderer::PassTable& passes, Result<std::unique_ptr<P>> pass, P** kept = nullptr) {
   if (!pass) return Error{pass.error()};
-  const std::string_view name = (*pass)->name();
   if (kept) *kept = pass->get();
-  passes[name] = std::move(pass.value());
+  const auto index = static_cast<std::size_t>((*pass)->id());
+  passes[index] = std::move(pass.value());
   return {};
 }
 
@@ -150,6 +149,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
   const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, {width, height}, settings, costs_.rates(), role.explore);
+  if (auto problem = passes::planProblem(plan.passes, plan.needs)) return Error{"cannot render: " + *problem};
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
@@ -194,9 +194,9 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
   }
   for (const glm::vec2& point : points) {
     view.jitterClip = glm::vec2(2.0f * point.x / static_cast<float>(width), -2.0f * point.y / static_cast<float>(height));
-    for (std::string_view pass : plan.passes) {
-      passes_.find(pass)->second->execute(frame);
-      endStage(pass);
+    for (passes::PassId pass : plan.passes) {
+      passes_[static_cast<std::size_t>(pass)]->execute(frame);
+      endStage(passes::passName(pass));
     }
     if (samples > 1) {
       accumulator_->add(*target_, 1.0f / static_cast<float>(samples));
@@ -211,7 +211,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
 
   // The frame's statistics are copied out before its image is read and read after it: the image's
   // read is the one wait of the frame (FrameStatistics).
-  const bool virtualObjectsRan = std::find(plan.passes.begin(), plan.passes.end(), "virtual-objects") != plan.passes.end();
+  const bool virtualObjectsRan = std::find(plan.passes.begin(), plan.passes.end(), passes::PassId::VirtualObjects) != plan.passes.end();
   readback_.begin();
   // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
   const std::size_t searchCopy = plan.search ? readback_.copy(reflections_.statistics(), sizeof(passes::SearchStatistics)) : 0;
@@ -290,9 +290,10 @@ void Renderer::learnCosts(const passes::FramePlan& plan, RenderedFrame& frame) {
   // casts the others, and is shared between them as the prediction shares it.
   double searching = 0.0, drawing = 0.0;
   for (const StageTiming& stage : frame.timings.stages) {
-    if (stage.name == "virtual-objects") drawing += stage.milliseconds;
-    for (const char* name : {"gbuffer-pyramid", "ray-hierarchy", "explosion-map", "search", "tessellation"})
-      if (stage.name == name) searching += stage.milliseconds;
+    using passes::PassId;
+    if (stage.name == passes::passName(PassId::VirtualObjects)) drawing += stage.milliseconds;
+    for (PassId pass : {PassId::GBufferPyramid, PassId::RayHierarchy, PassId::ExplosionMap, PassId::Search, PassId::Tessellation})
+      if (stage.name == passes::passName(pass)) searching += stage.milliseconds;
   }
   const double predictedTotal = planner.predicted.search + planner.predicted.rayCast;
   const double searchShare = predictedTotal > 0.0 ? planner.predicted.search / predictedTotal : 0.0;

@@ -2,6 +2,7 @@
 // Runs the passes a frame needs for one view and reads the frame back.
 // Owns GL resources: create, use and destroy it on the thread where its context is current.
 // Keeps per-view reflection state (last frame's reflection texels), so one Renderer serves one view.
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -120,6 +121,8 @@ class Renderer {
   Result<passes::PatchTessellationMeasure> measurePatchTessellation(const scene::ScenePose& pose, const RenderedFrame& frame);
   const scene::Scene& scene() const { return *scene_; }
   void setPassTiming(PassTiming timing) { passTiming_ = timing; }
+  // Every pass, by PassId.
+  using PassTable = std::array<std::unique_ptr<passes::Pass>, passes::kPassIds.size()>;
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -141,7 +144,7 @@ class Renderer {
   std::vector<math::Bounds> meshBounds_;  // object space, per mesh
   passes::ReflectionSlots slots_;
   passes::ReflectionResources reflections_;
-  std::map<std::string_view, std::unique_ptr<passes::Pass>, std::less<>> passes_;
+  PassTable passes_;
   passes::VirtualObjectsPass* virtualObjects_ = nullptr;  // in passes_
   std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
   std::optional<SampleAccumulator> accumulator_;  // built on the first anti-aliased frame

@@ -26,6 +26,8 @@ using uint = std::uint32_t;
 #define TESSELLATION_FINISHED_BINDING 9
 #define TESSELLATION_NEXT_WORKING_BINDING 10
 #define TESSELLATION_DRAWS_BINDING 12
+// Where the virtual-objects pass reads the finished triangles (virtual-objects-tessellated.vert).
+#define VIRTUAL_OBJECTS_TRIANGLES_BINDING 3
 
 // One run's working triangles in a round, [first, first + count) of the working list it reads
 // (round 0: of the part's meshes, numbered run after run), and the indirect dispatch over them.

@@ -1,9 +1,10 @@
 #version 430 core
 // Virtual objects from adaptive tessellation: vertex i of the draw is record i of the finished
 // triangles (three records per triangle), already in world space; each reads its whole triangle.
+#include "common/tessellation-records.glsl"
 #include "virtual-objects/virtual-triangle.glsl"
 
-layout(std430, binding = 3) readonly buffer TessellatedTriangles {
+layout(std430, binding = VIRTUAL_OBJECTS_TRIANGLES_BINDING) readonly buffer TessellatedTriangles {
   TessellatedVertex records[];
 };
 

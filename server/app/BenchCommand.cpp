@@ -31,6 +31,7 @@ CommandLine benchOptions() {
   std::vector<OptionSpec> specs = {
       {"scenes", "LIST", "comma-separated built-in scene names, glTF files (.gltf, .glb) or JSON scene files", "all built-in scenes"},
       {"size", "WxH", "frame size in pixels", "640x480"},
+      {"sizes", "LIST", "comma-separated frame sizes, each scene measured at each (instead of --size)", "--size"},
       {"frames", "N", "warm frames measured after the cold one", "60"},
       {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
       {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
@@ -47,7 +48,7 @@ CommandLine benchOptions() {
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
-      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH] [--frames N] [--cold-size WxH|none] [--no-reference] [--pass-timing per-pass|frame] [--samples N] "
+      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH | --sizes LIST] [--frames N] [--cold-size WxH|none] [--no-reference] [--pass-timing per-pass|frame] [--samples N] "
       "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
       "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
@@ -108,6 +109,7 @@ CommandLine tessellationBenchOptions() {
       {
           {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "quad,teapot-table,checker-sphere,kitchen"},
           {"size", "WxH", "frame size in pixels", "640x480"},
+      {"sizes", "LIST", "comma-separated frame sizes, each scene measured at each (instead of --size)", "--size"},
           {"frames", "N", "timed frames per setting, after a warm-up frame", "3"},
           {"time", "SECONDS", "scene time of the pose measured", "0"},
           {"csv", "FILE", "CSV output, one row per scene and setting", "tessellation.csv"},
@@ -127,7 +129,6 @@ int runTessellationBench(std::span<const std::string> arguments) {
   if (!frames) return fail(frames.error());
   if (!time) return fail(time.error());
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
-  std::tie(settings.width, settings.height) = *size;
   settings.frames = *frames;
   settings.time = *time;
   for (const char* output : {"csv", "json"})
@@ -190,6 +191,7 @@ CommandLine accuracyBenchOptions() {
       {
           {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
           {"size", "WxH", "frame size in pixels", "640x480"},
+      {"sizes", "LIST", "comma-separated frame sizes, each scene measured at each (instead of --size)", "--size"},
           {"poses", "N", "camera-path poses per setting, each timed and compared", std::to_string(defaults.poses)},
           {"orbit", "DEG", "how far the camera swings around its target along the path, 0 to 180",
            std::to_string(static_cast<int>(defaults.orbitDegrees))},
@@ -273,12 +275,20 @@ int runBench(std::span<const std::string> arguments) {
   CommandLine options = benchOptions();
   if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
   bench::BenchOptions settings;
-  auto size = options.size("size", kMaxBenchSide);
   auto frames = options.integer("frames", 1, kMaxFrames);
-  if (!size) return fail(size.error());
+  if (options.has("size") && options.has("sizes")) return fail("give --size or --sizes, not both");
+  std::vector<std::pair<int, int>> sizes;
+  if (options.has("sizes")) {
+    auto list = options.sizeList("sizes", kMaxBenchSide);
+    if (!list) return fail(list.error());
+    sizes = std::move(*list);
+  } else {
+    auto size = options.size("size", kMaxBenchSide);
+    if (!size) return fail(size.error());
+    sizes.push_back(*size);
+  }
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   if (!frames) return fail(frames.error());
-  std::tie(settings.width, settings.height) = *size;
   settings.frames = *frames;
   if (options.text("cold-size") == "none") {
     settings.coldWidth = settings.coldHeight = 0;
@@ -313,13 +323,16 @@ int runBench(std::span<const std::string> arguments) {
   if (!context) return fail(context.error());
 
   std::vector<bench::SceneBenchResult> results;
-  for (std::size_t i = 0; i < scenes.size(); ++i) {
-    std::fprintf(stderr, "bench [%zu/%zu] %s: %d frames at %dx%d%s ...\n", i + 1, scenes.size(), scenes[i]->name.c_str(),
-                 settings.frames + 1, settings.width, settings.height, settings.reference ? " + ray-traced reference" : "");
+  const std::size_t runs = scenes.size() * sizes.size();
+  for (std::size_t run = 0; run < runs; ++run) {
+    const std::shared_ptr<const scene::Scene>& scene = scenes[run / sizes.size()];
+    std::tie(settings.width, settings.height) = sizes[run % sizes.size()];
+    std::fprintf(stderr, "bench [%zu/%zu] %s: %d frames at %dx%d%s ...\n", run + 1, runs, scene->name.c_str(), settings.frames + 1,
+                 settings.width, settings.height, settings.reference ? " + ray-traced reference" : "");
     const auto started = std::chrono::steady_clock::now();
-    auto result = bench::benchmarkScene(**context, scenes[i], settings);
-    if (!result) return fail(scenes[i]->name + ": " + result.error());
-    std::fprintf(stderr, "bench [%zu/%zu] %s: done in %.1f s\n", i + 1, scenes.size(), scenes[i]->name.c_str(),
+    auto result = bench::benchmarkScene(**context, scene, settings);
+    if (!result) return fail(scene->name + ": " + result.error());
+    std::fprintf(stderr, "bench [%zu/%zu] %s: done in %.1f s\n", run + 1, runs, scene->name.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
     results.push_back(std::move(*result));
   }

@@ -70,6 +70,9 @@ std::vector<std::pair<std::string, std::string>> fields(const SceneBenchResult& 
   f.push_back({"unsolved", std::to_string(r.unsolvedPerFrame)});
   f.push_back({"mirror_parts", std::to_string(r.plannedParts)});
   f.push_back({"ray_cast_parts", std::to_string(r.rayCastParts)});
+  f.push_back({"searched_frame_ms", optionalNumber(r.searchedFrameMilliseconds, 2)});
+  f.push_back({"cast_frame_ms", optionalNumber(r.castFrameMilliseconds, 2)});
+  f.push_back({"searched_over_cast", optionalNumber(r.searchedOverCast(), 2)});
   const auto& planner = r.planner;
   f.push_back({"planner_rate_search", planner ? number(planner->rates.search, 3) : ""});
   f.push_back({"planner_rate_cast", planner ? number(planner->rates.rayCast, 3) : ""});
@@ -379,11 +382,14 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
              std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
              " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
              std::to_string(r.castTiles.possible) + " object tiles\n";
+    if (r.searchedOverCast())
+      table += "  searched / cast at " + std::to_string(r.width) + "x" + std::to_string(r.height) + ": " + number(*r.searchedOverCast(), 2) + " (every part searched " + number(*r.searchedFrameMilliseconds, 1) +
+               " ms a frame, every part cast " + number(*r.castFrameMilliseconds, 1) + " ms; medians of 10 warm frames)\n";
     if (r.planner) {
       const auto& p = *r.planner;
       table += "  planner (last measured frame): searching predicted " + number(p.predicted.search, 1) + " ms, took " +
                number(p.took.search, 1) + "; ray-casting predicted " + number(p.predicted.rayCast, 1) + " ms, took " +
-               number(p.took.rayCast, 1) + "; this device's rates over the llvmpipe fit: searching " + number(p.rates.search, 2) +
+               number(p.took.rayCast, 1) + "; rates measured here over the llvmpipe fit: searching " + number(p.rates.search, 2) +
                ", ray-casting " + number(p.rates.rayCast, 2) + "\n";
     }
     if (!r.stillFrames.empty()) {

@@ -130,6 +130,30 @@ Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::
   return comparisons;
 }
 
+// Median frame times along the animation's first frames with every mirror part searched and with
+// every part cast, each after a cold frame: what the planner chooses between.
+Status compareMethods(render::Renderer& renderer, const BenchOptions& options, SceneBenchResult& result) {
+  constexpr int kMethodComparisonFrames = 10;
+  for (passes::RayCastRule rule : {passes::RayCastRule::Never, passes::RayCastRule::Always}) {
+    passes::ReflectionSettings settings = options.reflection;
+    settings.rayCast = rule;
+    renderer.resetCoherence();
+    std::vector<double> totals;
+    bool planned = false;
+    for (int frame = 0; frame <= kMethodComparisonFrames; ++frame) {
+      auto rendered = renderer.render(scene::ScenePose::at(renderer.scene(), frame / options.framesPerSecond), options.width,
+                                      options.height, settings);
+      if (!rendered) return Error{rendered.error()};
+      planned = planned || !rendered->plan.empty();
+      if (frame > 0) totals.push_back(rendered->timings.totalMilliseconds);
+    }
+    if (!planned) return {};
+    (rule == passes::RayCastRule::Never ? result.searchedFrameMilliseconds : result.castFrameMilliseconds) = median(std::move(totals));
+  }
+  renderer.resetCoherence();
+  return {};
+}
+
 // Median wall time of the pose drawn without reflections, after one frame to settle the targets.
 double rasterFloor(render::Renderer& renderer, const scene::ScenePose& pose, const BenchOptions& options) {
   constexpr int kFloorFrames = 10;
@@ -258,6 +282,7 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   auto searches = compareSearches(r, options);
   if (!searches) return Error{searches.error()};
   result.searches = std::move(*searches);
+  if (Status status = compareMethods(r, options, result); !status) return Error{status.error()};
 
 
   if (options.coldWidth > 0 && options.coldHeight > 0) {

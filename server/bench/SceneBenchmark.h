@@ -58,6 +58,13 @@ struct SceneBenchResult {
   // The planner's last frame measured for it with the method it chose (not an exploration): its
   // rates, and what that frame's methods were predicted to cost and took (RenderedFrame::planner).
   std::optional<render::RenderedFrame::PlannerCosts> planner;
+  // Warm frames with every part searched (--ray-cast never) and with every part cast (always), the
+  // same poses, the bench's pass timing: median ms each (none when no mirror part was planned).
+  std::optional<double> searchedFrameMilliseconds, castFrameMilliseconds;
+  std::optional<double> searchedOverCast() const {
+    if (!searchedFrameMilliseconds || !castFrameMilliseconds || *castFrameMilliseconds <= 0.0) return std::nullopt;
+    return *searchedFrameMilliseconds / *castFrameMilliseconds;
+  }
   std::size_t plannedParts = 0, rayCastParts = 0, culledVertices = 0;
   std::size_t belowBudgetVertices = 0;  // last frame: of objects whose image is under the error budget
   std::size_t uncoveredRayCast = 0;  // last frame: pixels no virtual object covered, ray-cast instead

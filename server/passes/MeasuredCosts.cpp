@@ -23,9 +23,9 @@ void learn(double& rate, bool& learnt, int& measuredAt, int frame, double predic
 MeasuredCosts::FrameRole MeasuredCosts::nextFrame() {
   const int frame = frame_++;
   FrameRole role;
-  if (frame == 2 || (frame > 2 && frame % kExploreEvery == 0))
+  if (frame == 2 || frame == 3 || (frame > 3 && frame % kExploreEvery == 0))
     role.explore = searchMeasuredAt_ <= rayCastMeasuredAt_ ? PartMethod::VirtualObjects : PartMethod::RayCast;
-  role.measure = frame == 1 || role.explore || (frame > 2 && frame % kMeasureEvery == 0);
+  role.measure = frame == 1 || frame == 3 || (frame > 3 && (frame % kMeasureEvery == 0 || role.explore));
   return role;
 }
 

@@ -10,10 +10,11 @@ namespace specula::passes {
 
 class MeasuredCosts {
  public:
-  // Frames 1 and 2 (after the cold first frame, whose time is shader compilation) and then every
-  // kMeasureEvery frames are timed pass by pass; on frame 2 and every kExploreEvery frames every
-  // part takes the method measured longest ago (never, at first), so each rate stays measured
-  // whichever the plan prefers.
+  // Frame 1 (after the cold first frame, whose time is shader compilation) and then every
+  // kMeasureEvery frames are timed pass by pass. On frames 2 and 3 and every kExploreEvery frames
+  // every part takes the method measured longest ago (never, at first), so each rate stays
+  // measured whichever the plan prefers; frame 2 is not measured, since a method's first frame
+  // compiles its shaders (llvmpipe compiles a program on its first draw or dispatch).
   static constexpr int kMeasureEvery = 4, kExploreEvery = 32;
   // Each measurement after a method's first moves its rate this share of the way to what it measured.
   static constexpr double kLearningRate = 0.5;

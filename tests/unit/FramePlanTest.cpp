@@ -555,8 +555,13 @@ TEST(MeasuredCosts, AnExplorationMeasuresTheMethodMeasuredLongestAgo) {
   const passes::MeasuredCosts::FrameRole second = costs.nextFrame();
   ASSERT_TRUE(second.explore);
   EXPECT_EQ(*second.explore, passes::PartMethod::VirtualObjects);
+  EXPECT_FALSE(second.measure) << "the other method's first frame compiles its shaders";
+  const passes::MeasuredCosts::FrameRole third = costs.nextFrame();
+  ASSERT_TRUE(third.explore);
+  EXPECT_EQ(*third.explore, passes::PartMethod::VirtualObjects);
+  EXPECT_TRUE(third.measure);
   costs.observe({6.0, 0.0}, {3.0, 0.0});
-  int frame = 3;
+  int frame = 4;
   for (; frame < passes::MeasuredCosts::kExploreEvery; ++frame) {
     const passes::MeasuredCosts::FrameRole role = costs.nextFrame();
     EXPECT_FALSE(role.explore) << frame;

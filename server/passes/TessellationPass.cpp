@@ -13,11 +13,13 @@ GLuint groupsFor(std::size_t invocations) {
   return static_cast<GLuint>((invocations + TESSELLATION_GROUP_SIZE - 1) / TESSELLATION_GROUP_SIZE);
 }
 
-// Byte offsets in a run record of its round's indirect dispatch over triangles and over searches.
-std::size_t workGroupsOffset(int parity) {
-  return offsetof(gpu::TessellationRun, work) + static_cast<std::size_t>(parity) * sizeof(gpu::RunWork) + offsetof(gpu::RunWork, groups);
+// Byte offsets of the indirect dispatches a later round launches: in the totals, over the part's
+// triangles and over its searches; in a run record, round 0's search of that run.
+std::size_t partGroupsOffset(int parity) {
+  return offsetof(gpu::TessellationTotals, part) + static_cast<std::size_t>(parity) * sizeof(gpu::PartWork) + offsetof(gpu::PartWork, groups);
 }
-constexpr std::size_t kSearchGroupsOffset = offsetof(gpu::TessellationRun, searchGroups);
+constexpr std::size_t kPartSearchGroupsOffset = offsetof(gpu::TessellationTotals, partSearchGroups);
+constexpr std::size_t kRunSearchGroupsOffset = offsetof(gpu::TessellationRun, searchGroups);
 }  // namespace
 
 Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlApi& gl) {
@@ -60,7 +62,7 @@ std::vector<TessellationPass::PartRuns> TessellationPass::beginRuns(const FrameC
       draw.mesh = {3 * triangles, rounds ? 0u : 1u, 0, 0, 0};
       for (gpu::DrawArraysCommand& round : draw.rounds) round = {0, 1, 0, 0};
       if (rounds) {
-        record.work[0] = {partTriangles, triangles, {groupsFor(triangles), 1, 1}};
+        record.work[0] = {partTriangles, triangles};
         partTriangles += triangles;
       } else {
         record.drawnFromMesh = 1;
@@ -106,7 +108,6 @@ void TessellationPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_RUNS_BINDING, buffers.runs());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_FINISHED_BINDING, buffers.finished());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_DRAWS_BINDING, buffers.draws());
-  gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffers.runs());
   for (const PartRuns& part : parts) tessellatePart(frame, part);
   gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
@@ -125,9 +126,12 @@ void TessellationPass::tessellatePart(const FrameContext& frame, const PartRuns&
   const math::Bounds& bounds = frame.worldBounds[mirror.mirrorObject];
   programs_.classify.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
   programs_.classify.set("everyCornerReflected", mirror.kind == scene::SurfaceKind::Convex ? 0 : 1);
-  programs_.dispatch.use();
-  programs_.dispatch.set("firstRun", static_cast<unsigned>(part.firstRun));
-  programs_.dispatch.set("runCount", static_cast<unsigned>(part.runCount));
+  for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.dispatch, &programs_.search, &programs_.decide,
+                                           &programs_.emit}) {
+    program->use();
+    program->set("firstRun", static_cast<unsigned>(part.firstRun));
+    program->set("runCount", static_cast<unsigned>(part.runCount));
+  }
   programs_.layout.use();
   programs_.layout.set("firstRun", static_cast<unsigned>(part.firstRun));
   programs_.layout.set("runCount", static_cast<unsigned>(part.runCount));
@@ -140,16 +144,16 @@ void TessellationPass::tessellatePart(const FrameContext& frame, const PartRuns&
     // (r − 1) % 2 and writes the other.
     if (round > 0) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_WORKING_BINDING, buffers.working((round + 1) % 2));
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_NEXT_WORKING_BINDING, buffers.working(round % 2));
-    const std::size_t triangleGroups = workGroupsOffset(parity);
     if (round < maxLevel) {
-      dispatchRuns(frame, programs_.classify, part, round, triangleGroups);
+      dispatchRound(frame, programs_.classify, part, round, Work::Triangles);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       programs_.dispatch.use();
+      programs_.dispatch.set("fromMesh", round == 0 ? 1 : 0);
       gl.DispatchCompute(groupsFor(part.runCount), 1, 1);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-      dispatchRuns(frame, programs_.search, part, round, kSearchGroupsOffset);
+      dispatchRound(frame, programs_.search, part, round, Work::Searches);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      dispatchRuns(frame, programs_.decide, part, round, triangleGroups);
+      dispatchRound(frame, programs_.decide, part, round, Work::Triangles);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
     programs_.layout.use();
@@ -158,34 +162,39 @@ void TessellationPass::tessellatePart(const FrameContext& frame, const PartRuns&
     programs_.layout.set("lastRound", round == maxLevel ? 1 : 0);
     gl.DispatchCompute(1, 1, 1);
     gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    dispatchRuns(frame, programs_.emit, part, round, triangleGroups);
+    dispatchRound(frame, programs_.emit, part, round, Work::Triangles);
     gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   }
 }
 
-void TessellationPass::dispatchRuns(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round,
-                                    std::size_t indirectOffset) const {
+void TessellationPass::dispatchRound(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round,
+                                     Work work) const {
   const gl::GlApi& gl = frame.gl;
-  const std::vector<TessellatedRun>& runs = frame.reflections.tessellation().frameRuns();
-  const bool fromMesh = round == 0;
+  const TessellationBuffers& buffers = frame.reflections.tessellation();
   program.use();
-  program.set("fromMesh", fromMesh ? 1 : 0);
+  program.set("fromMesh", round == 0 ? 1 : 0);
   program.set("parity", static_cast<unsigned>(round % 2));
+  if (round > 0) {  // one dispatch over the whole part, sized by the last layout
+    gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffers.totals());
+    gl.DispatchComputeIndirect(static_cast<GLintptr>(work == Work::Triangles ? partGroupsOffset(round % 2) : kPartSearchGroupsOffset));
+    return;
+  }
+  // Round 0 reads each run's own mesh: a dispatch per run, over its triangles (known here) or its
+  // searches (counted on the GPU).
+  gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffers.runs());
+  const std::vector<TessellatedRun>& runs = buffers.frameRuns();
   for (std::size_t i = part.firstRun; i < part.firstRun + part.runCount; ++i) {
     const TessellatedRun& run = runs[i];
     if (!run.rounds) continue;
     program.set("runIndex", static_cast<unsigned>(i));
-    // Round 0's triangles are the mesh's, known here; the search's requests are counted on the GPU.
-    if (fromMesh) {
-      const std::size_t mesh = frame.scene.objects[run.object->object].mesh;
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_MESH_VERTICES_BINDING, frame.meshes.vertexBuffer(mesh));
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_MESH_INDICES_BINDING, frame.meshes.indexBuffer(mesh));
-      frame.setReflectedObject(program, *run.object);
-    }
-    if (fromMesh && indirectOffset != kSearchGroupsOffset)
+    const std::size_t mesh = frame.scene.objects[run.object->object].mesh;
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_MESH_VERTICES_BINDING, frame.meshes.vertexBuffer(mesh));
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_MESH_INDICES_BINDING, frame.meshes.indexBuffer(mesh));
+    frame.setReflectedObject(program, *run.object);
+    if (work == Work::Triangles)
       gl.DispatchCompute(groupsFor(run.object->triangleCount), 1, 1);
     else
-      gl.DispatchComputeIndirect(static_cast<GLintptr>(i * sizeof(gpu::TessellationRun) + indirectOffset));
+      gl.DispatchComputeIndirect(static_cast<GLintptr>(i * sizeof(gpu::TessellationRun) + kRunSearchGroupsOffset));
   }
 }
 

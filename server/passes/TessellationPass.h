@@ -5,9 +5,10 @@
 // the level limit. A round runs five compute kernels: a cheap classification of every triangle lists
 // the edges whose midpoint needs a search, the search runs only for those, a decision per triangle
 // counts what it becomes, one invocation lays the part's runs out in the lists, and emission writes
-// the finished triangles and the next round's children. Every count stays on the GPU: each round is
-// launched by indirect dispatches that the previous one wrote, and the virtual-objects pass draws by
-// indirect commands, so the CPU issues every round of every level without waiting for any.
+// the finished triangles and the next round's children. Every count stays on the GPU: after round 0
+// (a dispatch per object, over its mesh) each kernel runs once for all the part's objects, launched
+// by an indirect dispatch that the previous round's layout wrote, and the virtual-objects pass draws
+// by indirect commands, so the CPU issues every round of every level without waiting for any.
 #include <memory>
 
 #include "base/Result.h"
@@ -36,10 +37,11 @@ class TessellationPass final : public Pass {
   std::vector<PartRuns> beginRuns(const FrameContext& frame) const;
   // Every round of one part, from its meshes down to the deepest level.
   void tessellatePart(const FrameContext& frame, const PartRuns& part) const;
-  // Runs `program` once per run of the part that goes through rounds: in round 0 over its mesh's
-  // triangles, later over the count the last layout wrote (`indirect`: its offset in the run record).
-  void dispatchRuns(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round,
-                    std::size_t indirectOffset) const;
+  // What a kernel of a round runs over: working triangles, or the edges whose midpoint is searched.
+  enum class Work { Triangles, Searches };
+  // Runs `program` for a round of the part: in round 0 once per run that goes through rounds, over
+  // its mesh; later once for the whole part, by the counts the last layout wrote.
+  void dispatchRound(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round, Work work) const;
 
   Programs programs_;
 };

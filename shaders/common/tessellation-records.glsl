@@ -30,11 +30,10 @@ using uint = std::uint32_t;
 #define VIRTUAL_OBJECTS_TRIANGLES_BINDING 3
 
 // One run's working triangles in a round, [first, first + count) of the working list it reads
-// (round 0: of the part's meshes, numbered run after run), and the indirect dispatch over them.
+// (round 0: of the part's meshes, numbered run after run).
 struct RunWork {
   uint first;
   uint count;
-  uint groups[3];
 };
 
 struct TessellationRun {
@@ -73,8 +72,18 @@ struct RunDraws {
   DrawArraysCommand rounds[TESSELLATION_MAX_ROUNDS];
 };
 
+// After round 0, whose triangles are each run's mesh, a round runs each kernel once over all the
+// part's runs: their triangles fill [0, triangles) of the working list, run after run.
+struct PartWork {
+  uint triangles;
+  uint groups[3];  // the indirect dispatch over them
+};
+
 // The frame's totals, added to part after part; read back once the frame has finished.
 struct TessellationTotals {
+  PartWork part[2];          // this round's in part[round % 2], the next round's in the other
+  uint partRequests;         // edges whose midpoint this round searches, every run of the part
+  uint partSearchGroups[3];  // the indirect dispatch over them
   uint finished;        // triangles in the finished list
   uint partBudget;      // the current part may fill the finished list up to here
   uint capped;          // 1: a list reached the cap and splitting stopped early
@@ -85,7 +94,7 @@ struct TessellationTotals {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RunWork) == 20 && sizeof(TessellationRun) == 88, "std430 layout of TessellationRun");
+static_assert(sizeof(RunWork) == 8 && sizeof(TessellationRun) == 64, "std430 layout of TessellationRun");
 static_assert(sizeof(RunDraws) == 20 + 16 * TESSELLATION_MAX_ROUNDS, "std430 layout of RunDraws");
 }  // namespace specula::passes::gpu
 #endif

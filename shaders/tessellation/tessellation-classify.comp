@@ -52,10 +52,8 @@ bool nearMirror(TessellatedVertex a, TessellatedVertex b) {
 }
 
 void main() {
-  RunWork work = runs[runIndex].work[parity];
-  if (gl_GlobalInvocationID.x >= work.count) return;
-  uint triangle = work.first + gl_GlobalInvocationID.x;
-  uint local = gl_GlobalInvocationID.x;
+  uint triangle, local, run;
+  if (!roundTriangle(triangle, local, run)) return;
   TessellatedVertex corner[3] = TessellatedVertex[3](loadCorner(local, triangle, 0), loadCorner(local, triangle, 1), loadCorner(local, triangle, 2));
   int flags0 = int(corner[0].virtualFlags.w), flags1 = int(corner[1].virtualFlags.w), flags2 = int(corner[2].virtualFlags.w);
   bool near[3] = bool[3](nearMirror(corner[0], corner[1]), nearMirror(corner[1], corner[2]), nearMirror(corner[2], corner[0]));
@@ -97,7 +95,8 @@ void main() {
     if (near[e]) nearBits |= 1 << e;
     if (!search[e]) continue;
     requested |= 1 << e;
-    requests[3u * work.first + atomicAdd(runs[runIndex].requestCount, 1u)] = (local << 2) | uint(e);
+    if (fromMesh != 0) requests[3u * (triangle - local) + atomicAdd(runs[run].requestCount, 1u)] = (local << 2) | uint(e);
+    else requests[atomicAdd(totals.partRequests, 1u)] = (triangle << 2) | uint(e);
   }
   splits[triangle].mask = ivec4(0, requested | (nearBits << 3) | (drawable ? kDrawable : 0), 0, 0);
   splits[triangle].error = vec4(error, 0.0);

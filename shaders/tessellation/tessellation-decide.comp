@@ -6,9 +6,8 @@
 layout(local_size_x = TESSELLATION_GROUP_SIZE) in;
 
 void main() {
-  RunWork work = runs[runIndex].work[parity];
-  if (gl_GlobalInvocationID.x >= work.count) return;
-  uint triangle = work.first + gl_GlobalInvocationID.x;
+  uint triangle, local, run;
+  if (!roundTriangle(triangle, local, run)) return;
   int requested = splits[triangle].mask.y & 7, nearBits = (splits[triangle].mask.y >> 3) & 7;
   vec3 error = splits[triangle].error.xyz;
   int mask = 0;
@@ -25,6 +24,6 @@ void main() {
   }
   splits[triangle].mask.x = mask;
   const uint kChildren[4] = uint[4](0u, 2u, 3u, 4u);  // by number of split edges
-  if (mask != 0) atomicAdd(runs[runIndex].children, kChildren[bitCount(mask)]);
-  else if ((splits[triangle].mask.y & kDrawable) != 0) atomicAdd(runs[runIndex].unsplit, 1u);  // the others are dropped
+  if (mask != 0) atomicAdd(runs[run].children, kChildren[bitCount(mask)]);
+  else if ((splits[triangle].mask.y & kDrawable) != 0) atomicAdd(runs[run].unsplit, 1u);  // the others are dropped
 }

@@ -88,8 +88,7 @@ void main() {
     runs[run].childrenBase = childrenTotal;
     draws[run].rounds[round] = DrawArraysCommand(3u * runFinished, 1u, 3u * totals.finished, 0u);
     totals.finished += runFinished;
-    uint groups = (runChildren + uint(TESSELLATION_GROUP_SIZE) - 1u) / uint(TESSELLATION_GROUP_SIZE);
-    runs[run].work[next] = RunWork(childrenTotal, runChildren, uint[3](groups, 1u, 1u));
+    runs[run].work[next] = RunWork(childrenTotal, runChildren);
     childrenTotal += runChildren;
     // Decide's counts are spent: zeroed for the next round, and emit's places start at zero.
     runs[run].requestCount = 0u;
@@ -98,4 +97,7 @@ void main() {
     runs[run].childrenPlaced = 0u;
     runs[run].finishedPlaced = 0u;
   }
+  // The next round runs each kernel once over every run's children.
+  totals.part[next] = PartWork(childrenTotal, uint[3]((childrenTotal + uint(TESSELLATION_GROUP_SIZE) - 1u) / uint(TESSELLATION_GROUP_SIZE), 1u, 1u));
+  totals.partRequests = 0u;
 }

@@ -1,5 +1,5 @@
 #version 440 core
-// Round step 2, per requested edge of one object: its midpoint searched by the same search as scene
+// Round step 2, per requested edge (of one object in round 0, of the whole part later): its midpoint searched by the same search as scene
 // vertices, seeded between its ends' texels, and (pixel metric) its error. Runs only for the
 // requests, packed, so the large search code runs at full width.
 #include "common/search-core.glsl"
@@ -20,10 +20,19 @@ TessellatedVertex searchMidpoint(TessellatedVertex a, TessellatedVertex b) {
 }
 
 void main() {
-  if (gl_GlobalInvocationID.x >= runs[runIndex].requestCount) return;
-  uint firstTriangle = runs[runIndex].work[parity].first;
-  uint request = requests[3u * firstTriangle + gl_GlobalInvocationID.x];
-  uint local = request >> 2, triangle = firstTriangle + local;
+  uint id = gl_GlobalInvocationID.x, request, local, triangle;
+  if (fromMesh != 0) {  // one run's requests, its mesh bound
+    if (id >= runs[runIndex].requestCount) return;
+    uint firstTriangle = runs[runIndex].work[parity].first;
+    request = requests[3u * firstTriangle + id];
+    local = request >> 2;
+    triangle = firstTriangle + local;
+  } else {  // the whole part's
+    if (id >= totals.partRequests) return;
+    request = requests[id];
+    triangle = request >> 2;
+    local = 0u;  // corners come from the working list
+  }
   int e = int(request & 3u);
   TessellatedVertex a = loadCorner(local, triangle, e), b = loadCorner(local, triangle, (e + 1) % 3);
   TessellatedVertex midpoint = searchMidpoint(a, b);

@@ -301,3 +301,87 @@ TEST(MeshMirror, ImportedObjWithItsOwnNormals) {
   EXPECT_LE(result.mismatch, 0.015);
   std::filesystem::remove_all(folder);
 }
+
+namespace {
+
+// A mesh mirror the sphere's hard cases (HardCasesTest) do not reach.
+struct MirrorKind {
+  const char* name;
+  std::string mesh, placement;  // mirrorOverFloor()'s mesh entry and object keys
+};
+
+// A bicubic patch on the saddle y = 0.35 x z: a bilinear surface, whose control net lies on it.
+std::string saddlePatch() {
+  std::string points;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const double x = -1.2 + 0.8 * i, z = -1.2 + 0.8 * j;
+      points += (points.empty() ? "[" : ", [") + std::to_string(x) + ", " + std::to_string(0.35 * x * z) + ", " + std::to_string(z) + "]";
+    }
+  return R"({"name": "mirror", "segments": 24, "bezier_patches": [[)" + points + "]]}";
+}
+
+std::vector<MirrorKind> mirrorKinds() {
+  return {
+      {"torus", R"({"name": "mirror", "primitive": {"type": "torus", "major_radius": 1, "minor_radius": 0.35,
+                   "major_segments": 96, "minor_segments": 48}})",
+       R"("rotation": {"axis": [1, 0, 0], "degrees": 60}, "mirror": {})"},
+      {"concave_bowl", R"({"name": "mirror", "primitive": {"type": "lathe", "slices": 96, "profile": [
+                          [0, 0], [0.4, 0], [0.62, 0.03], [0.82, 0.1], [0.97, 0.22], [1.1, 0.4], [1.16, 0.55],
+                          [1.2, 0.7], [1.19, 0.72], [1.15, 0.7], [1.11, 0.56], [1.05, 0.42], [0.93, 0.25],
+                          [0.79, 0.13], [0.6, 0.06], [0.4, 0.035], [0, 0.035]]}})",
+       R"("translation": [0, -0.9, 0], "mirror": {})"},
+      {"saddle_patch", saddlePatch(), R"("translation": [0, -0.2, 0], "mirror": {})"},
+  };
+}
+
+struct HardView {
+  const char* name;
+  const char* camera;
+};
+
+const HardView kHardViews[] = {
+    {"grazing", R"({"eye": [4.5, -0.45, 0.8], "target": [0, -0.55, 0], "fov": 40})"},
+    {"far", R"({"eye": [30, 24, 36], "target": [0, -0.3, 0], "fov": 40})"},
+    {"half_off_screen", R"({"eye": [1, 3, 3.5], "target": [1.7, -0.3, 0], "fov": 40})"},
+};
+
+struct HardViewCase {
+  int kind, view;  // into mirrorKinds() and kHardViews
+  double bound;    // mirror mismatch against the ray tracer (measured on llvmpipe in the comment)
+};
+
+// The saddle patch seen grazing is not here: 59 % of its pixels are wrong (README, Known limits).
+const HardViewCase kHardViewCases[] = {
+    {0, 0, 0.003},  // torus: 0.14 % of 30 720 mirror pixels
+    {0, 1, 0.045},  // 2.9 % of 625
+    {0, 2, 0.065},  // 4.6 % of 63 935: thin bands at grazing silhouettes, as in TorusSplitIntoConvexAndSaddleParts
+    {1, 0, 0.006},  // concave bowl: 0.36 % of 20 161
+    {1, 1, 0.03},   // 1.6 % of 430
+    {1, 2, 0.006},  // 0.38 % of 55 930
+    {2, 1, 0.065},  // saddle patch: 4.2 % of 403
+    {2, 2, 0.035},  // 2.3 % of 54 566
+};
+
+}  // namespace
+
+class MeshMirrorHardViews : public ::testing::TestWithParam<HardViewCase> {};
+
+// Each mirror kind searched from a grazing eye, from far away (the mirror a few dozen pixels
+// across) and half off the screen, against the ray tracer tracing the same mesh.
+TEST_P(MeshMirrorHardViews, SearchedMirrorsStayNearTheRayTracer) {
+  const HardViewCase& hard = GetParam();
+  const MirrorKind kind = mirrorKinds()[static_cast<std::size_t>(hard.kind)];
+  const HardView& view = kHardViews[hard.view];
+  auto scene = parse(mirrorOverFloor(kind.mesh, kind.placement, view.camera));
+  ASSERT_TRUE(scene);
+  const Comparison result = compare(scene, restPose(*scene));
+  std::printf("%s %s: %.3f %% of %zu mirror pixels\n", kind.name, view.name, 100.0 * result.mismatch, result.mirrorPixels);
+  EXPECT_GT(result.mirrorPixels, 200u);
+  EXPECT_GT(result.frame.search.searched, 0u) << "searched, not cast";
+  EXPECT_LE(result.mismatch, hard.bound);
+}
+
+INSTANTIATE_TEST_SUITE_P(MeshMirror, MeshMirrorHardViews, ::testing::ValuesIn(kHardViewCases), [](const auto& test) {
+  return std::string(mirrorKinds()[static_cast<std::size_t>(test.param.kind)].name) + "_" + kHardViews[test.param.view].name;
+});

@@ -2,7 +2,6 @@
 // The frame graph as plain data: which passes run and which mirrors they serve, decided per frame
 // from what the camera sees, so a frame without a visible mirror runs no reflection pass at all.
 #include <optional>
-#include <string_view>
 #include <vector>
 
 #include "math/Bounds.h"

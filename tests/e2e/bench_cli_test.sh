@@ -39,6 +39,9 @@ fails_with "an unknown scene fails before rendering" "neither a built-in scene" 
 fails_with "a bad frame count names the option" "--frames expects an integer" bench --frames 0
 fails_with "an unknown GL backend fails before rendering" "--gl expects auto, egl-device" bench --gl glx
 fails_with "a bad cold size names the option" "--cold-size expects WIDTHxHEIGHT" bench --cold-size big
+fails_with "a bad size in --sizes names the option and the item" "--sizes expects WIDTHxHEIGHT with sides in [1, 4096] like 640x480, got '64x'" bench --sizes 640x480,64x
+fails_with "--size and --sizes together are refused" "give --size or --sizes, not both" bench --size 64x64 --sizes 64x64
+fails_with "an unknown pass timing names the choices" "--pass-timing expects per-pass or frame, got 'never'" bench --pass-timing never
 fails_with "an unwritable CSV names the file" "could not write '$work/no/dir/b.csv'" bench --scenes quad --size 32x24 --frames 1 --csv "$work/no/dir/b.csv"
 check "an unwritable CSV fails before any scene is measured" bash -c "! '$specula' bench --scenes quad --size 32x24 --frames 1 --json '$work/no/dir/b.json' 2>&1 | grep -q 'bench \[1/1\]'"
 check "bench --help lists every option" bash -c "for o in scenes size frames cold-size no-reference csv json gl; do '$specula' bench --help | grep -q -- \"--\$o\" || exit 1; done"

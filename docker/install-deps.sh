@@ -18,11 +18,13 @@ build_packages=(
   libglm-dev libegl-dev libgl-dev libosmesa6-dev libglfw3-dev
   libturbojpeg0-dev libboost-dev libprotobuf-dev protobuf-compiler
   libembree-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev libssl-dev
+  libcli11-dev          # command lines: parsing, subcommands and --help
   libgtest-dev          # the test suite is configured with the build (small)
 )
 test_packages=(
   chromium xvfb xauth   # tests: the browser client in headless Chromium, specula-view under Xvfb
   haproxy yamllint      # docker/lint-deploy.sh: the HAProxy front and the Kubernetes manifests
+  python3               # tests: the documentation check (links and quoted commands)
 )
 
 mode="${1:-}"

@@ -1,8 +1,8 @@
 #!/bin/bash
-# The CPU tables of the README, from one session on a quiet machine (software GL, llvmpipe):
+# The CPU tables of docs/benchmarks.md and docs/serving.md, from one session on a quiet machine (software GL, llvmpipe):
 # `specula bench` at default settings, searched (--ray-cast never) and with the planner off
 # (--plan everything), `specula bench serve` alone and behind HAProxy, and perf profiles of the
-# frame loop. Writes CSV/JSON, logs and profiles next to this script; tables.py prints the tables.
+# frame loop. Writes CSV/JSON, logs and profiles next to this script; docs/tools/bench_tables.py writes the tables.
 # Usage: bench-results/cpu-llvmpipe/run.sh [BUILD_DIR [STEP...]]
 #   steps: default searched everything serve instances profiles (default: all; about an hour on 2 cores)
 set -euo pipefail
@@ -29,7 +29,7 @@ if wants searched; then
 fi
 if wants everything; then
   # 20 frames and no reference: the planner off searches every mirror, as slowly as the run above;
-  # tables.py sets its frames against the default run's ray tracer.
+  # docs/tools/bench_tables.py sets its frames against the default run's ray tracer.
   step "bench --plan everything"
   timed "$out/bench-everything.log" "$specula" bench --scenes "$scenes" --plan everything --cold-size none --frames 20 \
     --no-reference --csv "$out/bench-everything.csv" --json "$out/bench-everything.json"

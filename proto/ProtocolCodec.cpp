@@ -27,9 +27,9 @@ bool hasUnknownFields(const protobuf::Message& message) {
 }
 
 template <class Message>
-Result<Message> decode(std::string_view payload, net::Encoding encoding) {
+Result<Message> decode(std::string_view payload, Encoding encoding) {
   Message message;
-  if (encoding == net::Encoding::Json) {
+  if (encoding == Encoding::Json) {
     protobuf::util::JsonParseOptions options;
     options.ignore_unknown_fields = false;
     const auto status = protobuf::util::JsonStringToMessage(std::string(payload), &message, options);
@@ -43,9 +43,9 @@ Result<Message> decode(std::string_view payload, net::Encoding encoding) {
 }
 
 template <class Message>
-std::string encode(const Message& message, net::Encoding encoding) {
+std::string encode(const Message& message, Encoding encoding) {
   std::string out;
-  if (encoding == net::Encoding::Json) {
+  if (encoding == Encoding::Json) {
     protobuf::util::JsonPrintOptions options;
     options.always_print_primitive_fields = true;  // scripts read every field without defaults logic
     (void)protobuf::util::MessageToJsonString(message, &out, options);  // cannot fail for our own messages
@@ -57,10 +57,10 @@ std::string encode(const Message& message, net::Encoding encoding) {
 
 }  // namespace
 
-Result<v1::ClientMessage> decodeClientMessage(std::string_view payload, bool text, net::Encoding encoding) {
-  if (encoding == net::Encoding::Json && !text)
+Result<v1::ClientMessage> decodeClientMessage(std::string_view payload, bool text, Encoding encoding) {
+  if (encoding == Encoding::Json && !text)
     return Error{"this connection speaks specula.v1.json: send text messages, not binary"};
-  if (encoding == net::Encoding::Proto && text)
+  if (encoding == Encoding::Proto && text)
     return Error{"this connection speaks specula.v1.proto: send binary messages, not text"};
   auto message = decode<v1::ClientMessage>(payload, encoding);
   if (message && message->kind_case() == v1::ClientMessage::KIND_NOT_SET)
@@ -68,15 +68,15 @@ Result<v1::ClientMessage> decodeClientMessage(std::string_view payload, bool tex
   return message;
 }
 
-std::string encodeServerMessage(const v1::ServerMessage& message, net::Encoding encoding) {
+std::string encodeServerMessage(const v1::ServerMessage& message, Encoding encoding) {
   return encode(message, encoding);
 }
 
-std::string encodeClientMessage(const v1::ClientMessage& message, net::Encoding encoding) {
+std::string encodeClientMessage(const v1::ClientMessage& message, Encoding encoding) {
   return encode(message, encoding);
 }
 
-Result<v1::ServerMessage> decodeServerMessage(std::string_view payload, net::Encoding encoding) {
+Result<v1::ServerMessage> decodeServerMessage(std::string_view payload, Encoding encoding) {
   return decode<v1::ServerMessage>(payload, encoding);
 }
 

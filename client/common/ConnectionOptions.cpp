@@ -11,9 +11,9 @@ std::vector<OptionSpec> connectionOptions() {
   };
 }
 
-Result<net::Encoding> parseEncoding(const std::string& text) {
-  if (text == "proto") return net::Encoding::Proto;
-  if (text == "json") return net::Encoding::Json;
+Result<protocol::Encoding> parseEncoding(const std::string& text) {
+  if (text == "proto") return protocol::Encoding::Proto;
+  if (text == "json") return protocol::Encoding::Json;
   return Error{"--encoding expects proto or json, got '" + text + "'"};
 }
 

@@ -8,7 +8,7 @@ namespace specula::client {
 
 struct Connection {
   ServerAddress address;
-  net::Encoding encoding = net::Encoding::Proto;
+  protocol::Encoding encoding = protocol::Encoding::Proto;
   ReconnectPolicy reconnect;
 };
 
@@ -17,6 +17,6 @@ std::vector<OptionSpec> connectionOptions();
 // Reads them, or says which is wrong and what it accepts.
 Result<Connection> parseConnectionOptions(const CommandLine& options);
 // "proto" or "json" (the --encoding values).
-Result<net::Encoding> parseEncoding(const std::string& text);
+Result<protocol::Encoding> parseEncoding(const std::string& text);
 
 }  // namespace specula::client

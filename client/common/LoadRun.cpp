@@ -183,7 +183,7 @@ std::string loadReportJson(const LoadReport& report) {
       {"options",
        {{"host", o.address.host},
         {"port", o.address.port},
-        {"encoding", o.encoding == net::Encoding::Proto ? "proto" : "json"},
+        {"encoding", o.encoding == protocol::Encoding::Proto ? "proto" : "json"},
         {"sessions", o.sessions},
         {"width", o.width},
         {"height", o.height},

@@ -15,7 +15,7 @@ namespace specula::client {
 
 struct LoadOptions {
   ServerAddress address;
-  net::Encoding encoding = net::Encoding::Proto;
+  protocol::Encoding encoding = protocol::Encoding::Proto;
   int sessions = 1;
   int width = 640, height = 360;
   std::chrono::milliseconds duration{5000};  // measured time, after the warm-up

@@ -9,7 +9,7 @@ bool reconnectable(int closeCode) {
   return closeCode == 0 || closeCode == 1001 || closeCode == 1006 || closeCode == 1011 || closeCode == 1012 || closeCode == 1013;
 }
 
-Result<std::unique_ptr<ResumingClient>> ResumingClient::connect(const ServerAddress& address, net::Encoding encoding, v1::Hello hello,
+Result<std::unique_ptr<ResumingClient>> ResumingClient::connect(const ServerAddress& address, protocol::Encoding encoding, v1::Hello hello,
                                                                 ReconnectPolicy policy, Notice notice) {
   std::unique_ptr<ResumingClient> client(new ResumingClient(address, encoding, std::move(hello), policy, std::move(notice)));
   if (Status opened = client->open(); !opened) return Error{opened.error()};

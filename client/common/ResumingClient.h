@@ -33,7 +33,7 @@ class ResumingClient {
   using Notice = std::function<void(const std::string&)>;
 
   // Connects and sends `hello`; the welcome arrives through receive() like any message.
-  static Result<std::unique_ptr<ResumingClient>> connect(const ServerAddress& address, net::Encoding encoding, v1::Hello hello,
+  static Result<std::unique_ptr<ResumingClient>> connect(const ServerAddress& address, protocol::Encoding encoding, v1::Hello hello,
                                                          ReconnectPolicy policy = {}, Notice notice = {});
 
   // Sends on the current connection; a Resize also becomes the viewport of the next hello. A send
@@ -50,13 +50,13 @@ class ResumingClient {
   int reconnects() const { return reconnects_; }  // successful ones
 
  private:
-  ResumingClient(ServerAddress address, net::Encoding encoding, v1::Hello hello, ReconnectPolicy policy, Notice notice)
+  ResumingClient(ServerAddress address, protocol::Encoding encoding, v1::Hello hello, ReconnectPolicy policy, Notice notice)
       : address_(std::move(address)), encoding_(encoding), hello_(std::move(hello)), policy_(policy), notice_(std::move(notice)) {}
   Status open();  // one connection and its hello
   Status reconnect(const std::string& why);  // tries until one connection works or the attempts are used up
 
   ServerAddress address_;
-  net::Encoding encoding_;
+  protocol::Encoding encoding_;
   v1::Hello hello_;
   ReconnectPolicy policy_;
   Notice notice_;

@@ -1,6 +1,6 @@
 #include "SpeculaClient.h"
 
-#include "net/UrlEncoding.h"
+#include "base/UrlEncoding.h"
 
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
@@ -27,7 +27,7 @@ Result<ServerAddress> parseServerUrl(const std::string& url) {
     const std::string parameters = rest.substr(query + 1);
     const std::size_t token = parameters.find("token=");
     if (token != std::string::npos)
-      address.token = net::percentDecoded(parameters.substr(token + 6, parameters.find('&', token) - token - 6));
+      address.token = percentDecoded(parameters.substr(token + 6, parameters.find('&', token) - token - 6));
     rest = rest.substr(0, query);
   }
   rest = rest.substr(0, rest.find('/'));
@@ -52,7 +52,7 @@ double steadyMilliseconds() {
 struct SpeculaClient::State {
   asio::io_context io;
   websocket::stream<beast::tcp_stream> ws{io};
-  net::Encoding encoding = net::Encoding::Proto;
+  protocol::Encoding encoding = protocol::Encoding::Proto;
   beast::flat_buffer buffer;
   bool readPending = false, readDone = false;
   beast::error_code readError;
@@ -78,7 +78,7 @@ struct SpeculaClient::State {
 SpeculaClient::SpeculaClient(std::unique_ptr<State> state) : state_(std::move(state)) {}
 SpeculaClient::~SpeculaClient() { close(); }
 
-Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddress& address, net::Encoding encoding,
+Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddress& address, protocol::Encoding encoding,
                                                               std::chrono::milliseconds timeout) {
   auto state = std::make_unique<State>();
   state->encoding = encoding;
@@ -97,12 +97,12 @@ Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddres
   if (!connected || error)
     return Error{"cannot connect to " + where + ": " + (connected ? error.message() : "timed out") +
                  " (is `specula serve` running there?)"};
-  const char* subprotocol = encoding == net::Encoding::Proto ? "specula.v1.proto" : "specula.v1.json";
+  const std::string subprotocol(protocol::subprotocolName(encoding));
   state->ws.set_option(websocket::stream_base::decorator([subprotocol](websocket::request_type& request) {
     request.set(beast::http::field::sec_websocket_protocol, subprotocol);
   }));
   state->ws.read_message_max(64u << 20);  // frames can be large
-  const std::string target = address.token.empty() ? "/ws" : "/ws?token=" + net::percentEncoded(address.token);
+  const std::string target = address.token.empty() ? "/ws" : "/ws?token=" + percentEncoded(address.token);
   websocket::response_type response;
   bool shaken = false;
   state->ws.async_handshake(response, where, target, [&](beast::error_code e) {
@@ -119,12 +119,12 @@ Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddres
     return Error{"the server at " + where + " refused the WebSocket upgrade: " + why};
   }
   beast::get_lowest_layer(state->ws).expires_never();
-  state->ws.binary(encoding == net::Encoding::Proto);
+  state->ws.binary(encoding == protocol::Encoding::Proto);
   return std::unique_ptr<SpeculaClient>(new SpeculaClient(std::move(state)));
 }
 
 Status SpeculaClient::send(const v1::ClientMessage& message) {
-  return sendRaw(protocol::encodeClientMessage(message, state_->encoding), state_->encoding == net::Encoding::Json);
+  return sendRaw(protocol::encodeClientMessage(message, state_->encoding), state_->encoding == protocol::Encoding::Json);
 }
 
 Status SpeculaClient::sendRaw(const std::string& payload, bool text) {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "ProtocolCodec.h"
+#include "WireEncoding.h"
 #include "base/Result.h"
-#include "net/Connection.h"
 
 namespace specula::client {
 
@@ -31,7 +31,7 @@ class SpeculaClient {
  public:
   // TCP connect and WebSocket upgrade on /ws with the encoding's subprotocol. Errors name the
   // address and what went wrong (refused, timed out, HTTP status of a declined upgrade).
-  static Result<std::unique_ptr<SpeculaClient>> connect(const ServerAddress& address, net::Encoding encoding,
+  static Result<std::unique_ptr<SpeculaClient>> connect(const ServerAddress& address, protocol::Encoding encoding,
                                                         std::chrono::milliseconds timeout = std::chrono::seconds(5));
   ~SpeculaClient();
 

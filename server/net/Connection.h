@@ -8,13 +8,9 @@
 #include <string>
 #include <string_view>
 
-namespace specula::net {
+#include "WireEncoding.h"
 
-// How WebSocket messages are encoded, chosen by subprotocol during the handshake.
-enum class Encoding {
-  Proto,  // `specula.v1.proto`: binary protobuf messages
-  Json,   // `specula.v1.json`: proto3 JSON text messages
-};
+namespace specula::net {
 
 // WebSocket close codes the server uses (RFC 6455 §7.4.1).
 enum class CloseCode : std::uint16_t {
@@ -52,7 +48,7 @@ class ConnectionHandler {
 };
 
 struct UpgradeRequest {
-  Encoding encoding = Encoding::Json;
+  protocol::Encoding encoding = protocol::Encoding::Json;
 };
 
 // Turns accepted WebSocket connections into sessions.

@@ -3,7 +3,7 @@
 #include <boost/beast/websocket.hpp>
 #include <string>
 
-#include "net/UrlEncoding.h"
+#include "base/UrlEncoding.h"
 #include "net/WebSocketConnection.h"
 
 namespace specula::net {
@@ -15,8 +15,6 @@ namespace websocket = beast::websocket;
 namespace {
 
 constexpr std::uint32_t kMaxHeaderBytes = 8 * 1024;
-constexpr const char* kProtoSubprotocol = "specula.v1.proto";
-constexpr const char* kJsonSubprotocol = "specula.v1.json";
 
 // Boost 1.74's string_view is its own type.
 std::string_view standard(boost::beast::string_view text) { return {text.data(), text.size()}; }
@@ -58,14 +56,14 @@ bool authorized(const http::request<http::empty_body>& request, const std::strin
 }
 
 // The first subprotocol we speak from the client's comma-separated list, or nullopt.
-std::optional<std::pair<Encoding, std::string>> chooseSubprotocol(std::string_view offered) {
+std::optional<std::pair<protocol::Encoding, std::string>> chooseSubprotocol(std::string_view offered) {
   while (!offered.empty()) {
     const std::size_t comma = offered.find(',');
     std::string_view name = offered.substr(0, comma);
     while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
     while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
-    if (name == kProtoSubprotocol) return std::pair{Encoding::Proto, std::string(name)};
-    if (name == kJsonSubprotocol) return std::pair{Encoding::Json, std::string(name)};
+    for (const protocol::Encoding encoding : {protocol::Encoding::Proto, protocol::Encoding::Json})
+      if (name == protocol::subprotocolName(encoding)) return std::pair{encoding, std::string(name)};
     if (comma == std::string_view::npos) break;
     offered.remove_prefix(comma + 1);
   }
@@ -140,8 +138,9 @@ HttpConnection::Response HttpConnection::respond(const http::request<http::empty
       return answer(http::status::upgrade_required,
                     "/ws is the WebSocket endpoint: connect with a WebSocket client\n");
     return answer(http::status::bad_request,
-                  std::string("choose a subprotocol: Sec-WebSocket-Protocol: ") + kJsonSubprotocol + " or " +
-                      kProtoSubprotocol + "\n");
+                  "choose a subprotocol: Sec-WebSocket-Protocol: " +
+                      std::string(protocol::subprotocolName(protocol::Encoding::Json)) + " or " +
+                      std::string(protocol::subprotocolName(protocol::Encoding::Proto)) + "\n");
   }
   if (path == "/metrics" && options_.metricsText)
     return answer(http::status::ok, options_.metricsText(), "text/plain; version=0.0.4; charset=utf-8");

@@ -22,7 +22,7 @@ WebSocketConnection::WebSocketConnection(beast::tcp_stream stream, const ServerO
 
 WebSocketConnection::~WebSocketConnection() = default;
 
-void WebSocketConnection::start(Request request, Encoding encoding, std::string subprotocol) {
+void WebSocketConnection::start(Request request, protocol::Encoding encoding, std::string subprotocol) {
   encoding_ = encoding;
   beast::get_lowest_layer(ws_).expires_never();  // the WebSocket's own timeouts take over
   websocket::stream_base::timeout timeouts{};
@@ -40,7 +40,7 @@ void WebSocketConnection::start(Request request, Encoding encoding, std::string 
   auto accepted = [self = shared_from_this()](beast::error_code error) {
     if (error) return self->finish();
     self->registry_.add(self);
-    self->ws_.text(self->encoding_ == Encoding::Json);
+    self->ws_.text(self->encoding_ == protocol::Encoding::Json);
     self->handler_ = self->acceptor_.accept({self->encoding_}, self);
     self->firstMessageDeadline_.expires_after(self->options_.firstMessageTimeout);
     self->firstMessageDeadline_.async_wait([weak = self->weak_from_this()](beast::error_code waited) {

@@ -25,7 +25,7 @@ class WebSocketConnection : public MessageSink, public std::enable_shared_from_t
   ~WebSocketConnection() override;
 
   // Completes the upgrade for `request` (already checked: path, token) answering `subprotocol`.
-  void start(Request request, Encoding encoding, std::string subprotocol);
+  void start(Request request, protocol::Encoding encoding, std::string subprotocol);
 
   void sendControl(std::string payload) override;
   void sendFrame(std::string payload) override;
@@ -53,7 +53,7 @@ class WebSocketConnection : public MessageSink, public std::enable_shared_from_t
   ConnectionAcceptor& acceptor_;
   ConnectionRegistry& registry_;
   std::shared_ptr<void> connectionToken_;  // counts this connection while it is open
-  Encoding encoding_ = Encoding::Json;
+  protocol::Encoding encoding_ = protocol::Encoding::Json;
   std::shared_ptr<ConnectionHandler> handler_;
   boost::beast::flat_buffer readBuffer_;
   // Strand-only state.

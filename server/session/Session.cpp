@@ -44,7 +44,7 @@ std::string checkViewport(std::uint32_t width, std::uint32_t height, const HubOp
 
 }  // namespace
 
-Session::Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, net::Encoding encoding)
+Session::Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, protocol::Encoding encoding)
     : hub_(hub),
       encoding_(encoding),
       id_(randomToken()),

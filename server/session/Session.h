@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "WireEncoding.h"
 #include "net/Connection.h"
 #include "session/FrameRenderer.h"
 #include "session/SessionState.h"
@@ -31,7 +32,7 @@ struct FrameRequest {
 
 class Session : public net::ConnectionHandler, public std::enable_shared_from_this<Session> {
  public:
-  Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, net::Encoding encoding);
+  Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, protocol::Encoding encoding);
 
   // net::ConnectionHandler
   void onMessage(std::string_view payload, bool text) override;
@@ -65,7 +66,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   void closeForBadMessage(net::CloseCode code, v1::Error::Code errorCode, const std::string& message);
 
   SessionHub& hub_;
-  const net::Encoding encoding_;
+  const protocol::Encoding encoding_;
   const std::string id_;
   const std::uint64_t number_;  // process-unique, for renderer coherence
   std::string resumeToken_;

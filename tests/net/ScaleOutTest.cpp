@@ -86,7 +86,7 @@ class ScaleOut : public ::testing::Test {
   // A viewer through the front, greeted, paused at its own time and camera, with its own settings.
   Viewer connectViewer(int i) {
     Viewer viewer;
-    auto client = client::ResumingClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, net::Encoding::Proto, hello(),
+    auto client = client::ResumingClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, protocol::Encoding::Proto, hello(),
                                                   {12, 100ms, 1000ms, 3000ms}, [notices = viewer.notices](const std::string& notice) { notices->push_back(notice); });
     EXPECT_TRUE(client) << client.error();
     if (!client) return viewer;
@@ -199,7 +199,7 @@ TEST_F(ScaleOut, ForgedTokensGetAFreshSessionAndAReason) {
   std::string altered = token;
   altered[5] = altered[5] == 'A' ? 'B' : 'A';
   for (const std::string& forged : {altered, std::string("s1.") + base64UrlEncode("not a state") + "." + base64UrlEncode(std::string(32, 'x'))}) {
-    auto client = client::SpeculaClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, net::Encoding::Json, 5s);
+    auto client = client::SpeculaClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, protocol::Encoding::Json, 5s);
     ASSERT_TRUE(client) << client.error();
     v1::ClientMessage message;
     *message.mutable_hello() = hello();

@@ -50,7 +50,7 @@ double greyDeviation(const v1::Frame& frame) {
 
 // A client of the server on `port` that has said hello with a `width` × `height` viewport; null (and a
 // failed expectation) when it could not.
-std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, net::Encoding encoding, std::uint32_t width,
+std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, protocol::Encoding encoding, std::uint32_t width,
                                                      std::uint32_t height) {
   auto client = client::SpeculaClient::connect({"127.0.0.1", port, ""}, encoding, 5s);
   EXPECT_TRUE(client) << client.error();
@@ -71,7 +71,7 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
   const auto port = static_cast<std::uint16_t>(std::stoi((*listening)[1]));
 
   std::vector<std::unique_ptr<client::SpeculaClient>> clients;
-  for (net::Encoding encoding : {net::Encoding::Proto, net::Encoding::Json}) {
+  for (protocol::Encoding encoding : {protocol::Encoding::Proto, protocol::Encoding::Json}) {
     auto client = greetedClient(port, encoding, 160, 120);
     ASSERT_TRUE(client);
     std::optional<v1::Frame> frame;
@@ -111,7 +111,7 @@ TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
   ASSERT_TRUE(server);
   const auto listening = server->waitFor(kListening, 120s);
   ASSERT_TRUE(listening) << server->output();
-  auto client = greetedClient(static_cast<std::uint16_t>(std::stoi((*listening)[1])), net::Encoding::Proto, 64, 48);
+  auto client = greetedClient(static_cast<std::uint16_t>(std::stoi((*listening)[1])), protocol::Encoding::Proto, 64, 48);
   ASSERT_TRUE(client);
   std::optional<v1::Welcome> welcome;
   for (int i = 0; i < 10 && !welcome; ++i) {

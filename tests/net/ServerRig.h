@@ -110,7 +110,7 @@ class ServerRig {
   net::HttpServer& server() { return *server_; }
   const scene::Scene& scene() const { return *scene_; }
 
-  std::unique_ptr<client::SpeculaClient> connect(net::Encoding encoding = net::Encoding::Proto,
+  std::unique_ptr<client::SpeculaClient> connect(protocol::Encoding encoding = protocol::Encoding::Proto,
                                                  const std::string& token = "") {
     auto client = client::SpeculaClient::connect({"127.0.0.1", port(), token}, encoding, 2s);
     EXPECT_TRUE(client.ok()) << (client.ok() ? "" : client.error());

@@ -125,7 +125,7 @@ RigOptions signedRig(const std::string& secret) {
 
 TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFrame) {
   ServerRig first(signedRig(kSecret)), second(signedRig(kSecret)), stranger(signedRig(std::string(40, 'q')));
-  auto client = first.connect(net::Encoding::Json);
+  auto client = first.connect(protocol::Encoding::Json);
   ASSERT_TRUE(client);
   greet(*client);
   ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
@@ -141,7 +141,7 @@ TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFra
   ASSERT_FALSE(token.empty()) << "with a secret every frame carries the state's token";
   first.stop();  // the instance is gone
 
-  auto moved = second.connect(net::Encoding::Proto);
+  auto moved = second.connect(protocol::Encoding::Proto);
   ASSERT_TRUE(moved);
   const v1::Welcome welcome = greet(*moved, 64, 48, token);
   EXPECT_TRUE(welcome.resumed());
@@ -153,10 +153,10 @@ TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFra
   EXPECT_EQ(welcome.settings().still_samples(), 2u);
   EXPECT_FALSE(receiveUntil(*moved, [](const v1::ServerMessage& m) { return m.has_error(); }, 300ms)) << "no error for a good token";
   // Stateless: the same token resumes again (until it expires), on any instance with the secret.
-  auto again = second.connect(net::Encoding::Proto);
+  auto again = second.connect(protocol::Encoding::Proto);
   EXPECT_TRUE(greet(*again, 64, 48, token).resumed());
 
-  auto refused = stranger.connect(net::Encoding::Proto);
+  auto refused = stranger.connect(protocol::Encoding::Proto);
   ASSERT_TRUE(refused);
   EXPECT_FALSE(greet(*refused, 64, 48, token).resumed()) << "another secret: a fresh session";
   auto error = receiveUntil(*refused, [](const v1::ServerMessage& m) { return m.has_error(); });
@@ -169,7 +169,7 @@ TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFra
 
 TEST(SignedResume, WithoutASecretFramesCarryNoTokenAndAnUnknownTokenIsSaidSo) {
   ServerRig rig;
-  auto client = rig.connect(net::Encoding::Proto);
+  auto client = rig.connect(protocol::Encoding::Proto);
   ASSERT_TRUE(client);
   greet(*client, 64, 48, "0123456789abcdef0123456789abcdef");
   auto error = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_error(); });
@@ -188,7 +188,7 @@ TEST(Readiness, ReadyzSaysWhetherToSendNewSessionsHere) {
   const HttpReply ready = httpRequest(rig.port(), "/readyz");
   EXPECT_EQ(ready.status, 200) << "needs no token";
   EXPECT_EQ(ready.body, "ready\n");
-  auto client = rig.connect(net::Encoding::Proto, "t0ken");
+  auto client = rig.connect(protocol::Encoding::Proto, "t0ken");
   ASSERT_TRUE(client);
   greet(*client);
   const HttpReply full = httpRequest(rig.port(), "/readyz");

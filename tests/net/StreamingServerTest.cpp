@@ -14,7 +14,7 @@ bool antiAliased(const v1::Frame& frame) {
   return std::any_of(frame.stages().begin(), frame.stages().end(), [](const v1::StageTime& stage) { return stage.name() == "anti-aliasing"; });
 }
 
-using net::Encoding;
+using protocol::Encoding;
 
 // Decodes a frame's JPEG and returns its mean grey level, or -1 when it does not decode to w×h.
 double meanGrey(const v1::Frame& frame) {

@@ -1,8 +1,8 @@
-#include "net/UrlEncoding.h"
+#include "base/UrlEncoding.h"
 
 #include <cctype>
 
-namespace specula::net {
+namespace specula {
 
 namespace {
 int hexValue(char c) { return std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : std::tolower(c) - 'a' + 10; }
@@ -37,4 +37,4 @@ std::string percentDecoded(std::string_view text) {
   return out;
 }
 
-}  // namespace specula::net
+}  // namespace specula

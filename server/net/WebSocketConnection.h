@@ -37,7 +37,6 @@ class WebSocketConnection : public MessageSink, public std::enable_shared_from_t
     std::string reason;
   };
 
-  void onAccept(boost::beast::error_code error);
   void doRead();
   void onRead(boost::beast::error_code error, std::size_t bytes);
   void doWrite();

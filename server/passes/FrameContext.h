@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "gl/GlApi.h"
-#include "gl/GpuMeshes.h"
-#include "gl/GpuTextures.h"
 #include "gl/RenderTarget.h"
 #include "gl/ShaderProgram.h"
 #include "math/Bounds.h"
 #include "passes/FramePlan.h"
+#include "passes/GpuMeshes.h"
+#include "passes/GpuTextures.h"
 #include "passes/ReflectionResources.h"
 #include "passes/ReflectionSettings.h"
 #include "scene/Scene.h"
@@ -42,8 +42,8 @@ struct FrameContext {
   const scene::Scene& scene;
   const scene::ScenePose& pose;
   const std::vector<math::Bounds>& worldBounds;  // per object, at this pose
-  const gl::GpuMeshes& meshes;
-  const gl::GpuTextures& textures;
+  const GpuMeshes& meshes;
+  const GpuTextures& textures;
   const FrameView& view;
   const FramePlan& plan;
   const ReflectionSettings& settings;

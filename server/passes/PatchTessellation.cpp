@@ -27,7 +27,7 @@ Result<PatchTessellationProbe> PatchTessellationProbe::create(const gl::GlApi& g
 }
 
 PatchTessellationMeasure PatchTessellationProbe::measure(const scene::Scene& scene, const scene::ScenePose& pose,
-                                                         const gl::GpuMeshes& meshes, const glm::mat4& worldToClip,
+                                                         const GpuMeshes& meshes, const glm::mat4& worldToClip,
                                                          glm::ivec2 viewportPixels) {
   const gl::GlApi& gl = *gl_;
   PatchTessellationMeasure measure;

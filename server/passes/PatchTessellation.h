@@ -11,8 +11,8 @@
 #include "base/Result.h"
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
-#include "gl/GpuMeshes.h"
 #include "gl/ShaderProgram.h"
+#include "passes/GpuMeshes.h"
 #include "scene/Scene.h"
 #include "scene/ScenePose.h"
 
@@ -34,7 +34,7 @@ class PatchTessellationProbe {
   static Result<PatchTessellationProbe> create(const gl::GlApi& gl);
 
   // Tessellates every parametric mesh of `scene` at `pose` as the scene pass does for this view.
-  PatchTessellationMeasure measure(const scene::Scene& scene, const scene::ScenePose& pose, const gl::GpuMeshes& meshes,
+  PatchTessellationMeasure measure(const scene::Scene& scene, const scene::ScenePose& pose, const GpuMeshes& meshes,
                                    const glm::mat4& worldToClip, glm::ivec2 viewportPixels);
 
  private:

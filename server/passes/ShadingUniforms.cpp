@@ -19,9 +19,9 @@ void setSceneLighting(const gl::ShaderProgram& program, const scene::Scene& scen
   }
 }
 
-void setMaterial(const gl::ShaderProgram& program, const scene::Material& material, const gl::GpuTextures& textures) {
+void setMaterial(const gl::ShaderProgram& program, const scene::Material& material, const GpuTextures& textures) {
   textures.bind(material.texture);
-  program.set("materialTexture", static_cast<int>(gl::GpuTextures::kMaterialTextureUnit));
+  program.set("materialTexture", static_cast<int>(GpuTextures::kMaterialTextureUnit));
   program.set("materialHasTexture", material.texture ? 1 : 0);
   program.set("materialBaseColor", material.baseColor);
   program.set("materialUnlit", material.unlit ? 1 : 0);

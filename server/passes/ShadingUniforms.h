@@ -1,15 +1,15 @@
 #pragma once
 // Sets the uniforms of shaders/common/shading.glsl; every pass that shades scene geometry uses it.
-#include "gl/GpuTextures.h"
 #include "gl/ShaderProgram.h"
 #include "passes/FrameContext.h"
+#include "passes/GpuTextures.h"
 #include "scene/Scene.h"
 
 namespace specula::passes {
 
 void setSceneLighting(const gl::ShaderProgram& program, const scene::Scene& scene);
-// Also binds the material's texture (gl::GpuTextures) and points materialTexture at its unit.
-void setMaterial(const gl::ShaderProgram& program, const scene::Material& material, const gl::GpuTextures& textures);
+// Also binds the material's texture (GpuTextures) and points materialTexture at its unit.
+void setMaterial(const gl::ShaderProgram& program, const scene::Material& material, const GpuTextures& textures);
 
 // viewForward and pixelAngle: the eye's ray cones, from which shading.glsl's pixelFootprint sizes the
 // texture footprint of pixels shaded where a traced ray lands.

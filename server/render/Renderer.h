@@ -11,12 +11,12 @@
 
 #include "base/Result.h"
 #include "gl/GlContext.h"
-#include "gl/GpuMeshes.h"
 #include "gl/GpuReadback.h"
-#include "gl/GpuTextures.h"
 #include "gl/RenderTarget.h"
 #include "math/Bounds.h"
 #include "passes/FrameContext.h"
+#include "passes/GpuMeshes.h"
+#include "passes/GpuTextures.h"
 #include "passes/MeasuredCosts.h"
 #include "passes/Pass.h"
 #include "passes/PatchTessellation.h"
@@ -138,8 +138,8 @@ class Renderer {
 
   gl::GlContext& context_;
   std::shared_ptr<const scene::Scene> scene_;
-  gl::GpuMeshes meshes_;
-  gl::GpuTextures textures_;
+  passes::GpuMeshes meshes_;
+  passes::GpuTextures textures_;
   std::vector<math::Bounds> meshBounds_;  // object space, per mesh
   passes::ReflectionSlots slots_;
   passes::ReflectionResources reflections_;

@@ -1,6 +1,6 @@
 #pragma once
 // Colour textures: decoded once at load (PNG, JPEG, BMP, TGA through stb_image), their mip chain built
-// here in linear light, so the GPU (gl/GpuTextures uploads these very levels) and the reference's
+// here in linear light, so the GPU (passes/GpuTextures uploads these very levels) and the reference's
 // sampler (reference/TextureSampler) filter the same texels.
 #include <cstddef>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // twin of BezierPatch::sample for the patch tessellation and the exact mirror G-buffer (checked
 // against the ray tracer's patches in tests/gl/ParametricMirrorTest.cpp).
 
-// The storage binding: gl::GpuMeshes::kPatchPointsBinding unless the including shader, whose own
+// The storage binding: passes::GpuMeshes::kPatchPointsBinding unless the including shader, whose own
 // buffers use that one, defines another first.
 #ifndef PATCH_POINTS_BINDING
 #define PATCH_POINTS_BINDING 1

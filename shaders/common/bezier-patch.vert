@@ -1,5 +1,5 @@
 #version 430 core
 // One GL patch per Bézier patch, of one vertex with no attributes: the tessellation stages read the
-// patch's 16 control points from storage themselves (gl::GpuMeshes::drawPatches).
+// patch's 16 control points from storage themselves (passes::GpuMeshes::drawPatches).
 
 void main() {}

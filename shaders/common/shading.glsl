@@ -9,7 +9,7 @@ uniform int materialUnlit;           // 1: emissive, the colour written is the c
 uniform int materialHasChecker;
 uniform vec3 materialCheckerOddColor;
 uniform float materialCheckerCellsPerUnit;
-uniform sampler2D materialTexture;  // gl::GpuTextures::kMaterialTextureUnit; white when the material has none
+uniform sampler2D materialTexture;  // passes::GpuTextures::kMaterialTextureUnit; white when the material has none
 uniform int materialHasTexture;     // 0: no texture fetch at all (an explicit-gradient fetch is dear on a CPU rasterizer)
 
 uniform vec3 sceneAmbient;

@@ -8,7 +8,7 @@
 #include "gl/GlObject.h"
 #include "scene/Scene.h"
 
-namespace specula::gl {
+namespace specula::passes {
 
 class GpuMeshes {
  public:
@@ -17,7 +17,7 @@ class GpuMeshes {
   // Storage binding of a parametric mesh's control points (16 vec4 a patch, object space).
   static constexpr GLuint kPatchPointsBinding = 1;
 
-  GpuMeshes(const GlApi& gl, const std::vector<scene::Mesh>& meshes);
+  GpuMeshes(const gl::GlApi& gl, const std::vector<scene::Mesh>& meshes);
 
   // Draws all triangles of mesh `index` with the program and state currently bound.
   void draw(std::size_t index) const;
@@ -37,15 +37,15 @@ class GpuMeshes {
 
  private:
   struct Entry {
-    GlVertexArray vertexArray;
-    GlBuffer vertices;
-    GlBuffer indices;
+    gl::GlVertexArray vertexArray;
+    gl::GlBuffer vertices;
+    gl::GlBuffer indices;
     GLsizei indexCount;
-    std::optional<GlBuffer> patchPoints;  // parametric meshes only
+    std::optional<gl::GlBuffer> patchPoints;  // parametric meshes only
     GLsizei patchCount = 0;
   };
-  const GlApi* gl_;
+  const gl::GlApi* gl_;
   std::vector<Entry> meshes_;
 };
 
-}  // namespace specula::gl
+}  // namespace specula::passes

@@ -1,14 +1,15 @@
-#include "gl/GpuMeshes.h"
+#include "passes/GpuMeshes.h"
 
 #include <cstddef>
 #include <glm/glm.hpp>
 
-namespace specula::gl {
+namespace specula::passes {
 
-GpuMeshes::GpuMeshes(const GlApi& gl, const std::vector<scene::Mesh>& meshes) : gl_(&gl) {
+GpuMeshes::GpuMeshes(const gl::GlApi& gl, const std::vector<scene::Mesh>& meshes) : gl_(&gl) {
   meshes_.reserve(meshes.size());
   for (const scene::Mesh& mesh : meshes) {
-    Entry entry{GlVertexArray(gl), GlBuffer(gl), GlBuffer(gl), static_cast<GLsizei>(mesh.indices.size()), std::nullopt, 0};
+    Entry entry{gl::GlVertexArray(gl), gl::GlBuffer(gl), gl::GlBuffer(gl), static_cast<GLsizei>(mesh.indices.size()),
+                std::nullopt, 0};
     gl.BindVertexArray(entry.vertexArray.id());
     gl.BindBuffer(GL_ARRAY_BUFFER, entry.vertices.id());
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(scene::Vertex)),
@@ -61,4 +62,4 @@ void GpuMeshes::drawPatches(std::size_t index) const {
   gl_->DrawArrays(GL_PATCHES, 0, entry.patchCount);
 }
 
-}  // namespace specula::gl
+}  // namespace specula::passes

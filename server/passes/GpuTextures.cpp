@@ -1,6 +1,6 @@
-#include "gl/GpuTextures.h"
+#include "passes/GpuTextures.h"
 
-namespace specula::gl {
+namespace specula::passes {
 
 namespace {
 
@@ -13,7 +13,7 @@ GLint glWrap(scene::TextureWrap wrap) {
   return GL_REPEAT;
 }
 
-void upload(const GlApi& gl, const GlTexture& target, const scene::Texture& texture) {
+void upload(const gl::GlApi& gl, const gl::GlTexture& target, const scene::Texture& texture) {
   gl.BindTexture(GL_TEXTURE_2D, target.id());
   const scene::TextureLevel& base = texture.levels.front();
   gl.TexStorage2D(GL_TEXTURE_2D, static_cast<GLsizei>(texture.levels.size()), GL_SRGB8_ALPHA8, base.width, base.height);
@@ -32,7 +32,7 @@ void upload(const GlApi& gl, const GlTexture& target, const scene::Texture& text
 
 }  // namespace
 
-GpuTextures::GpuTextures(const GlApi& gl, const std::vector<scene::Texture>& textures) : gl_(&gl), white_(gl) {
+GpuTextures::GpuTextures(const gl::GlApi& gl, const std::vector<scene::Texture>& textures) : gl_(&gl), white_(gl) {
   textures_.reserve(textures.size());
   for (const scene::Texture& texture : textures) upload(gl, textures_.emplace_back(gl), texture);
   upload(gl, white_, scene::textureFromPixels("white", 1, 1, {255, 255, 255, 255}));
@@ -45,4 +45,4 @@ void GpuTextures::bind(std::optional<std::uint32_t> index) const {
   gl_->ActiveTexture(GL_TEXTURE0);
 }
 
-}  // namespace specula::gl
+}  // namespace specula::passes

@@ -10,14 +10,14 @@
 #include "gl/GlObject.h"
 #include "scene/Scene.h"
 
-namespace specula::gl {
+namespace specula::passes {
 
 class GpuTextures {
  public:
   // The texture unit shading.glsl's materialTexture samples; no pass binds anything else there.
   static constexpr GLuint kMaterialTextureUnit = 7;
 
-  GpuTextures(const GlApi& gl, const std::vector<scene::Texture>& textures);
+  GpuTextures(const gl::GlApi& gl, const std::vector<scene::Texture>& textures);
 
   // Binds texture `index` (a 1×1 white one when nullopt, so the sampler is always complete) on
   // kMaterialTextureUnit; leaves GL_TEXTURE0 active.
@@ -25,9 +25,9 @@ class GpuTextures {
   std::size_t size() const { return textures_.size(); }
 
  private:
-  const GlApi* gl_;
-  std::vector<GlTexture> textures_;
-  GlTexture white_;
+  const gl::GlApi* gl_;
+  std::vector<gl::GlTexture> textures_;
+  gl::GlTexture white_;
 };
 
-}  // namespace specula::gl
+}  // namespace specula::passes

@@ -6,14 +6,12 @@
 
 #include "ConnectionOptions.h"
 #include "LoadRun.h"
+#include "base/CommandFailure.h"
 #include "base/CommandLine.h"
 
 namespace {
 
-int fail(const std::string& message) {
-  std::cerr << "specula-load: " << message << "\n";
-  return 1;
-}
+constexpr specula::CommandFailure fail{"specula-load"};
 
 }  // namespace
 

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <thread>
 
 #include "CameraConversions.h"
@@ -12,6 +11,7 @@
 #include "ConnectionOptions.h"
 #include "LoadRun.h"
 #include "ResumingClient.h"
+#include "base/CommandFailure.h"
 #include "base/CommandLine.h"
 
 namespace {
@@ -19,10 +19,7 @@ namespace {
 using namespace specula;
 using Clock = std::chrono::steady_clock;
 
-int fail(const std::string& message) {
-  std::cerr << "specula-path: " << message << "\n";
-  return 1;
-}
+constexpr CommandFailure fail{"specula-path"};
 
 v1::ClientMessage cameraMessage(const client::PathKey& key, std::uint64_t sequence) {
   v1::ClientMessage message;

@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <vector>
 
+#include "base/CommandFailure.h"
 #include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
@@ -62,10 +62,7 @@ std::string defaultOutputName(const std::string& sceneName) {
   return (name.empty() ? "frame" : name) + ".png";
 }
 
-int fail(const std::string& message) {
-  std::cerr << "specula render: " << message << "\n";
-  return 1;
-}
+constexpr CommandFailure fail{"specula render"};
 
 // Applies --eye/--target/--up/--fov over the posed camera.
 Status overrideCamera(const CommandLine& options, math::Camera& camera) {

@@ -8,6 +8,7 @@
 
 #include "ConnectionOptions.h"
 #include "LoadRun.h"
+#include "base/CommandFailure.h"
 #include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
@@ -50,10 +51,7 @@ CommandLine serveBenchOptions() {
       });
 }
 
-int fail(const std::string& message) {
-  std::cerr << "specula bench serve: " << message << "\n";
-  return 1;
-}
+constexpr CommandFailure fail{"specula bench serve"};
 
 std::string number(double value, int decimals) {
   char text[32];

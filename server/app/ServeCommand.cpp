@@ -5,8 +5,8 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
 
+#include "base/CommandFailure.h"
 #include "base/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
@@ -69,10 +69,7 @@ CommandLine serveOptions() {
       std::move(specs));
 }
 
-int fail(const std::string& message) {
-  std::cerr << "specula serve: " << message << "\n";
-  return 1;
-}
+constexpr CommandFailure fail{"specula serve"};
 
 // --resume-secret-file, else SPECULA_RESUME_SECRET, without a trailing newline; empty: neither given.
 Result<std::string> readResumeSecret(const CommandLine& options) {

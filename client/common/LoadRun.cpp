@@ -1,10 +1,10 @@
 #include "LoadRun.h"
 
 #include "OrbitCamera.h"
+#include "base/Percentile.h"
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -108,14 +108,6 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
 
 }  // namespace
 
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const double rank = std::ceil(p / 100.0 * static_cast<double>(values.size()));
-  const std::size_t index = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(values.size()))) - 1;
-  return values[index];
-}
-
 LoadReport runLoad(const LoadOptions& options) {
   LoadReport report;
   report.options = options;
@@ -150,9 +142,9 @@ LoadReport runLoad(const LoadOptions& options) {
     report.fpsMean = std::accumulate(fps.begin(), fps.end(), 0.0) / static_cast<double>(fps.size());
     report.fpsMin = *std::min_element(fps.begin(), fps.end());
   }
-  report.latencyP50 = percentile(latencies, 50);
-  report.latencyP99 = percentile(latencies, 99);
-  report.latencyMax = percentile(latencies, 100);
+  report.latencyP50 = nearestRankPercentile(latencies, 0.5);
+  report.latencyP99 = nearestRankPercentile(latencies, 0.99);
+  report.latencyMax = nearestRankPercentile(latencies, 1.0);
   if (report.frames > 0) {
     const double n = static_cast<double>(report.frames);
     report.renderMsMean = renderSum / n;
@@ -167,8 +159,8 @@ std::string loadReportJson(const LoadReport& report) {
   for (const SessionLoad& s : report.sessions)
     sessions.push_back({{"frames", s.frames},
                         {"fps", s.fps},
-                        {"latency_ms_p50", percentile(s.latencyMs, 50)},
-                        {"latency_ms_p99", percentile(s.latencyMs, 99)},
+                        {"latency_ms_p50", nearestRankPercentile(s.latencyMs, 0.5)},
+                        {"latency_ms_p99", nearestRankPercentile(s.latencyMs, 0.99)},
                         {"bytes", s.bytes},
                         {"skipped_frames", s.skippedFrames},
                         {"render_ms_mean", s.renderMsMean},

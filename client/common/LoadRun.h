@@ -51,9 +51,6 @@ struct LoadReport {
 // Runs the load; connection failures are reported per session, not thrown.
 LoadReport runLoad(const LoadOptions& options);
 
-// Nearest-rank percentile (p in [0, 100]) of unsorted values; 0 for none.
-double percentile(std::vector<double> values, double p);
-
 // One JSON object (options, aggregate, per-session figures) for automation.
 std::string loadReportJson(const LoadReport& report);
 

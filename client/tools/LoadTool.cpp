@@ -8,6 +8,7 @@
 #include "LoadRun.h"
 #include "base/CommandFailure.h"
 #include "base/CommandLine.h"
+#include "base/Percentile.h"
 
 namespace {
 
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < report.sessions.size(); ++i) {
     const client::SessionLoad& s = report.sessions[i];
     std::printf("%7zu  %5.1f  %11.1f  %6.1f  %9.1f  %9.2f  %8.1f  %7llu  %10d  %14.0f  %s\n", i + 1, s.fps,
-                client::percentile(s.latencyMs, 50), client::percentile(s.latencyMs, 99), s.renderMsMean,
+                nearestRankPercentile(s.latencyMs, 0.5), nearestRankPercentile(s.latencyMs, 0.99), s.renderMsMean,
                 s.encodeMsMean, s.frames ? static_cast<double>(s.bytes) / static_cast<double>(s.frames) / 1024.0 : 0.0,
                 static_cast<unsigned long long>(s.skippedFrames), s.reconnects, s.longestGapMs, s.error.empty() ? "-" : s.error.c_str());
   }

@@ -9,10 +9,10 @@
 #include "CameraConversions.h"
 #include "CameraPath.h"
 #include "ConnectionOptions.h"
-#include "LoadRun.h"
 #include "ResumingClient.h"
 #include "base/CommandFailure.h"
 #include "base/CommandLine.h"
+#include "base/Percentile.h"
 
 namespace {
 
@@ -190,8 +190,8 @@ int main(int argc, char** argv) {
   client.close();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::printf("%zu samples, %zu frames in %.2f s (%.1f fps); latency p50 %.1f ms, p99 %.1f ms; %.1f KB/frame; wrote %s\n",
-              samples, frames, seconds, static_cast<double>(frames) / seconds, client::percentile(latencies, 50),
-              client::percentile(latencies, 99), frames ? static_cast<double>(bytes) / static_cast<double>(frames) / 1024.0 : 0.0,
+              samples, frames, seconds, static_cast<double>(frames) / seconds, nearestRankPercentile(latencies, 0.5),
+              nearestRankPercentile(latencies, 0.99), frames ? static_cast<double>(bytes) / static_cast<double>(frames) / 1024.0 : 0.0,
               options.text("csv").c_str());
   if (!problem.empty()) return fail(problem);
   return 0;

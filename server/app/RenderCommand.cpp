@@ -7,11 +7,11 @@
 
 #include "base/CommandFailure.h"
 #include "base/CommandLine.h"
+#include "base/Percentile.h"
 #include "app/Commands.h"
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
 #include "app/ReflectionOptions.h"
-#include "bench/ReflectionAccuracy.h"
 #include "encode/JpegEncoder.h"
 #include "encode/PngEncoder.h"
 #include "reference/RayTracer.h"
@@ -43,9 +43,7 @@ CommandLine renderOptions() {
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
   specs.push_back(glOption());
   return CommandLine(
-      "specula render [--scene NAME|FILE] [--gltf-scene N] [--camera N] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
-      "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--samples N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "specula render [options]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"
@@ -114,8 +112,8 @@ std::string describePatchTessellation(const passes::PatchTessellationMeasure& me
   std::snprintf(line, sizeof line,
                 "parametric: %zu patches -> %zu triangles (tessellated for this view; %zu on screen, pixel area p10 / "
                 "p50 / p90 %.1f / %.1f / %.1f)\n",
-                measure.patches, measure.triangles, areas.size(), bench::nearestRankPercentile(areas, 0.1),
-                bench::nearestRankPercentile(areas, 0.5), bench::nearestRankPercentile(areas, 0.9));
+                measure.patches, measure.triangles, areas.size(), nearestRankPercentile(areas, 0.1),
+                nearestRankPercentile(areas, 0.5), nearestRankPercentile(areas, 0.9));
   return line;
 }
 

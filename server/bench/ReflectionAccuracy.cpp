@@ -9,6 +9,7 @@
 #include <memory>
 #include <variant>
 
+#include "base/Percentile.h"
 #include "math/ExtrusionReflection.h"
 #include "math/PatchReflection.h"
 #include "math/SphereReflection.h"
@@ -140,13 +141,6 @@ glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world, int w
   const glm::vec4 clip = view.worldToClip() * glm::vec4(world, 1.0f);
   const glm::dvec2 ndc = glm::dvec2(clip.x, clip.y) / static_cast<double>(clip.w);
   return {(ndc.x * 0.5 + 0.5) * width, (0.5 - ndc.y * 0.5) * height};
-}
-
-double nearestRankPercentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const double rank = std::ceil(p * static_cast<double>(values.size()));
-  return values[std::clamp(static_cast<std::size_t>(std::max(rank, 1.0)) - 1, std::size_t{0}, values.size() - 1)];
 }
 
 double ReflectionPointErrors::percentile(double p) const { return nearestRankPercentile(pixels, p); }

@@ -22,9 +22,6 @@ struct MeasuredVertex {
   glm::dvec2 offset;   // search R − exact R
 };
 
-// The p-quantile (0 ≤ p ≤ 1) of `values` by the nearest-rank definition; 0 when there are none.
-double nearestRankPercentile(std::vector<double> values, double p);
-
 struct ReflectionPointErrors {
   std::vector<double> pixels;            // |offset| of each measured vertex, in the order of `vertices`
   std::vector<MeasuredVertex> vertices;

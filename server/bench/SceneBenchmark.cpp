@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "base/Percentile.h"
 #include "bench/ReflectionAccuracy.h"
 #include "reference/ImageMetrics.h"
 #include "bench/ImageComparison.h"

@@ -2,7 +2,6 @@
 #include <turbojpeg.h>
 
 #include <algorithm>
-#include <numeric>
 
 #include "LoadRun.h"
 #include "ServerRig.h"
@@ -610,16 +609,6 @@ TEST(LoadRun, ReportsAnUnreachableServerAsSessionErrors) {
   const client::LoadReport report = client::runLoad(load);
   EXPECT_EQ(report.errors, 2u);
   EXPECT_NE(report.sessions[0].error.find("cannot connect to 127.0.0.1:1"), std::string::npos) << report.sessions[0].error;
-}
-
-TEST(LoadRun, PercentilesUseNearestRank) {
-  EXPECT_EQ(client::percentile({}, 50), 0.0);
-  EXPECT_EQ(client::percentile({5, 1, 3, 2, 4}, 50), 3.0);
-  EXPECT_EQ(client::percentile({5, 1, 3, 2, 4}, 100), 5.0);
-  EXPECT_EQ(client::percentile({5, 1, 3, 2, 4}, 0), 1.0);
-  std::vector<double> hundred(100);
-  std::iota(hundred.begin(), hundred.end(), 1.0);
-  EXPECT_EQ(client::percentile(hundred, 99), 99.0);
 }
 
 }  // namespace

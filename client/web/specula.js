@@ -366,28 +366,15 @@
     updateOverlay();
   }
 
+  const optionText = (id) => $(id).selectedOptions[0]?.textContent ?? '';
+
   function updateOverlay() {
-    const f = state.frame;
-    if (!f) return;
-    const ms = (v) => Number(v || 0).toFixed(1);
-    const stages = (f.stages || []).map((s) => `${s.name} ${ms(s.ms)}`).join(' · ');
-    const search = f.search || {};
-    const tessellation = f.tessellation || {};
-    const plan = f.plan || [];
-    const sum = (field) => plan.reduce((total, part) => total + Number(part[field] || 0), 0);
-    const lines = [
-      `${f.width}×${f.height} ${f.still ? 'still' : 'interactive'}${f.reencoded ? ' (view unchanged: re-encoded, not rendered)' : ''} · frame ${f.number} · ${state.frameTimes.length} fps`,
-      `input → frame ${state.latencyMs === null ? '–' : `${state.latencyMs.toFixed(0)} ms`}`,
-      `server: render ${ms(f.renderMs)} ms · encode ${ms(f.encodeMs)} ms · input→sent ${ms(f.serverMs)} ms`,
-      `passes (GPU ms): ${stages}`,
-      `search: ${search.mirrors || 0} mirrors · ${search.searched || 0} vertices · ${Number(search.meanSteps || 0).toFixed(2)} steps (max ${search.maxSteps || 0}) · ${search.unsolved || 0} unsolved${search.enlarged || search.inNoCone ? ` · ${search.enlarged || 0} enlarged, ${search.inNoCone || 0} in no cone` : ''}`,
-      tessellation.inputTriangles
-        ? `tessellation: ${tessellation.inputTriangles} → ${tessellation.finishedTriangles} triangles · ${tessellation.midpointSearches} midpoint searches${tessellation.capped ? ' · CAPPED' : ''}`
-        : 'tessellation: off or nothing to split',
-      `plan: ${plan.length} mirror parts (${plan.filter((part) => part.method === 'ray-cast').length} ray-cast, ${plan.filter((part) => part.method === 'own-colour').length} own colour, ${plan.filter((part) => part.method === 'environment-map').length} environment map, ${plan.filter((part) => part.facesAway).length} facing away) · drew ${sum('searchedObjects')} objects, ${sum('searchedVertices')} vertices · left out ${sum('culledObjects')} objects, ${sum('culledVertices')} vertices, ${sum('belowBudgetObjects')} objects under the error budget · ${sum('uncoveredRayCast')} uncovered px ray-cast`,
-      `${(f.jpegBytes / 1024).toFixed(1)} KB · ${f.skippedFrames || 0} skipped · scene ${(f.sceneTimeMs / 1000).toFixed(2)} s`,
-    ];
-    overlay.textContent = lines.join('\n');
+    if (!state.frame) return;
+    const searching = $('method').value === 'SEARCH';
+    SpeculaStatistics.show(overlay, state.frame, {
+      fps: state.frameTimes.length, latencyMs: state.latencyMs, methodName: optionText('method'),
+      searchName: searching ? optionText('search').replace(/\s*\(.*\)$/, '') : null,  // without its credit: "crosshair"
+    });
   }
 
   if (!('WebSocket' in window) || !('createImageBitmap' in window)) {

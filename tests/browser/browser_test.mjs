@@ -3,7 +3,8 @@
 //   node --experimental-websocket browser_test.mjs PATH/TO/specula [SCREENSHOT-DIR]
 // Checks: the page shows the mirror scene (its canvas screenshot against `specula render` of the same
 // camera and time, PSNR bound below), the overlay shows statistics, a scripted drag changes the view,
-// and a blank or stale canvas fails.
+// a blank or stale canvas fails, and at several window sizes the statistics panel is one line inside
+// the window, clear of every control, whose details open with one click (screenshots of each to look at).
 import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -15,6 +16,8 @@ const keepDir = process.argv[3];
 const work = mkdtempSync(join(tmpdir(), 'specula-browser-'));
 const kMinPsnr = 30;          // dB: the page's JPEG (quality 85) against the lossless render
 const kMinChangeAfterDrag = 4; // mean absolute difference in grey levels between views before and after the drag
+// Window sizes the statistics panel is laid out at: a laptop, a desktop, and narrow (the controls under the view).
+const kWindowSizes = [[1000, 700], [1600, 900], [600, 800]];
 let failures = 0;
 const check = (description, ok, detail = '') => {
   console.log(`${ok ? 'ok' : 'FAIL'} - ${description}${detail ? `: ${detail}` : ''}`);
@@ -161,6 +164,52 @@ try {
     return decodePng(bytes);
   }
 
+  // Waits until the canvas's pixels match its box after a window resize; returns its width.
+  async function canvasResizedToItsBox(timeoutMs = 10000) {
+    const deadline = Date.now() + timeoutMs;
+    while (Date.now() < deadline) {
+      const width = await evaluate(`(() => { const c = document.getElementById('frame');
+        return c.width === c.clientWidth && c.height === c.clientHeight ? c.width : 0; })()`);
+      if (width) return width;
+      await sleep(50);
+    }
+    throw new Error(`the canvas did not follow the window's size within ${timeoutMs} ms`);
+  }
+  async function saveWholePage(name) {
+    const { data } = await page('Page.captureScreenshot', { format: 'png' });
+    writeFileSync(join(keepDir || work, name), Buffer.from(data, 'base64'));
+  }
+  async function clickAt({ x, y }) {
+    await page('Input.dispatchMouseEvent', { type: 'mousePressed', x, y, button: 'left', clickCount: 1 });
+    await page('Input.dispatchMouseEvent', { type: 'mouseReleased', x, y, button: 'left', clickCount: 1 });
+  }
+  // The statistics panel's box, its summary's, and the boxes of the controls it must stay clear of.
+  const statisticsLayout = () => evaluate(`(() => {
+    const box = (element) => { const r = element.getBoundingClientRect(); return { left: r.left, top: r.top, right: r.right, bottom: r.bottom }; };
+    const panel = document.getElementById('overlay'), summary = panel.querySelector('summary') || panel;  // a panel without one fails below
+    const named = (element) => ({ name: element.id || element.tagName, ...box(element) });
+    const controls = [document.getElementById('controls'), ...document.querySelectorAll('#controls button, #controls input, #controls select')];
+    const s = box(summary);
+    return {
+      open: panel.open, text: panel.textContent, summary: summary.textContent, panel: box(panel),
+      summaryLines: Math.round(summary.getBoundingClientRect().height / parseFloat(getComputedStyle(summary).lineHeight)),
+      summaryCentre: { x: (s.left + s.right) / 2, y: (s.top + s.bottom) / 2 },
+      detailsHeight: panel.querySelector('.statistics')?.getBoundingClientRect().height || 0,
+      scrollWidth: panel.scrollWidth, clientWidth: panel.clientWidth,
+      viewport: { width: innerWidth, height: innerHeight },
+      controls: controls.map(named).filter((c) => c.right > c.left && c.bottom > c.top),
+    };
+  })()`);
+  const intersects = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+  function checkClearOfControls(when, layout) {
+    const { panel, viewport } = layout;
+    const overlapped = layout.controls.filter((control) => intersects(panel, control)).map((control) => control.name);
+    check(`${when}: the statistics panel overlaps no control`, layout.controls.length > 10 && overlapped.length === 0,
+      `${overlapped.length} of ${layout.controls.length} controls overlapped${overlapped.length ? `: ${overlapped.join(', ')}` : ''}`);
+    check(`${when}: the statistics panel lies inside the window`,
+      panel.left >= 0 && panel.top >= 0 && panel.right <= viewport.width && panel.bottom <= viewport.height, JSON.stringify(panel));
+  }
+
   const eye = '2.5,1.6,4.2', target = '0,0.6,0', fov = 45, timeMs = 3000;
   await page('Page.navigate', { url: `http://127.0.0.1:${port}/?eye=${eye}&target=${target}&fov=${fov}&time=${timeMs}&paused=1` });
   const first = await stillFrame((f) => f.sceneTimeMs === timeMs && Math.abs(f.camera.eye.x - 2.5) < 1e-3);
@@ -244,6 +293,38 @@ try {
   check('with the camera and settings it had', resumed !== null && Math.abs(resumed.welcome.camera.eye.x - moved.camera.eye.x) < 1e-3 &&
     resumed.welcome.settings.search === 'SEARCH_EXPLOSION_MAP' && resumed.welcome.settings.plan === 'PLAN_EVERYTHING',
     JSON.stringify(resumed?.welcome.camera.eye));
+
+  await pressKey('o');
+  check('the O key shows the overlay again', await evaluate("document.getElementById('overlay').hidden") === false);
+  for (const [width, height] of kWindowSizes) {
+    const size = `${width}x${height}`;
+    await page('Emulation.setDeviceMetricsOverride', { width, height, deviceScaleFactor: 1, mobile: false });
+    const canvasWidth = await canvasResizedToItsBox();
+    await stillFrame((f) => f.width === canvasWidth);
+    const closed = await statisticsLayout();
+    await saveWholePage(`browser-statistics-${size}-closed.png`);
+    check(`${size}: the statistics panel is closed, a one-line summary of fps, render time, size and plan`,
+      !closed.open && closed.summaryLines === 1 && /^\d+ fps · render [\d.]+ ms · \d+×\d+ · \d+ /.test(closed.summary),
+      `${closed.summaryLines} lines: ${closed.summary}`);
+    checkClearOfControls(`${size}, closed`, closed);
+    await clickAt(closed.summaryCentre);
+    const opened = await statisticsLayout();
+    await saveWholePage(`browser-statistics-${size}-open.png`);
+    check(`${size}: one click on the summary opens the details`, opened.open && opened.detailsHeight > 0 &&
+      /plan: \d+ mirror parts/.test(opened.text), `open ${opened.open}, details ${opened.detailsHeight} px high`);
+    check(`${size}: the open details fit the panel's width (no sideways scrolling)`, opened.scrollWidth <= opened.clientWidth,
+      `content ${opened.scrollWidth} px wide in ${opened.clientWidth} px`);
+    checkClearOfControls(`${size}, open`, opened);
+    await clickAt(opened.summaryCentre);
+    check(`${size}: a second click closes them`, !(await statisticsLayout()).open);
+  }
+  // Without a search no mirror part is planned: the summary names the method instead.
+  const lastFrame = await evaluate('window.specula.frame.number');
+  await evaluate(`(() => { const method = document.getElementById('method');
+    method.value = 'NONE'; method.dispatchEvent(new Event('change')); })()`);
+  await stillFrame((f) => Number(f.number) > Number(lastFrame) && (f.plan || []).length === 0);
+  const unsearched = await evaluate("document.querySelector('#overlay summary').textContent");
+  check('with reflections off the summary says so', / · none \(mirror colour\)$/.test(unsearched), unsearched);
 } catch (error) {
   check('browser test ran', false, error.stack || String(error));
 } finally {

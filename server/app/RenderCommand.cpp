@@ -43,9 +43,7 @@ CommandLine renderOptions() {
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
   specs.push_back(glOption());
   return CommandLine(
-      "specula render [--scene NAME|FILE] [--gltf-scene N] [--camera N] [--size WxH] [--eye x,y,z --target x,y,z --up x,y,z --fov DEG] "
-      "[--time SECONDS] [--method search|explosion-map|environment-map|raytrace|none] [--margin SHARE] [--gbuffer-scale X] [--gbuffer-precision 32|16] [--environment-size N] [--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
-      "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--tessellation MODE --metric METRIC --threshold X --level N] [--samples N] [--out FILE.png|FILE.jpg] [--gl BACKEND]",
+      "specula render [options]",
       "Renders one frame of a scene deterministically and prints the time each stage took.\n"
       "Camera options override the scene's (animated) camera one value at a time.\n"
       "Methods: search = virtual objects from the screen-space reflection-point search (GL);\n"

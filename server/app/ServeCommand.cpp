@@ -13,8 +13,8 @@
 #include "app/SceneSource.h"
 #include "app/ReflectionOptions.h"
 #include "app/Service.h"
-#include "math/SamplePattern.h"
 #include "scene/AssetFiles.h"
+#include "session/SessionSettingsSchema.h"
 #include "session/SignedResume.h"
 
 namespace specula::app {
@@ -43,20 +43,11 @@ CommandLine serveOptions() {
       {"public-metrics", "", "serve /metrics without the token (for a scraper inside a private network)", ""},
   };
   for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
-  std::vector<OptionSpec> sessionDefaults = tessellationOptions();
-  const std::vector<OptionSpec> search = searchOptions();
-  sessionDefaults.insert(sessionDefaults.begin(), search.begin(), search.end());
-  sessionDefaults.push_back({"still-samples", "N", "anti-aliasing of still frames: samples a pixel, 1, 2, 4, 8 or 16",
-                             std::to_string(math::kStillFrameSamples)});
-  sessionDefaults.push_back({"interactive-samples", "N", "anti-aliasing of frames sent while input arrives", "1"});
-  for (OptionSpec& spec : sessionDefaults) {
-    spec.help += " (sessions' default)";
+  for (OptionSpec& spec : settingOptions(session::sessionSettingsSchema(), session::SessionSettings{}, {}, " (sessions' default)"))
     specs.push_back(std::move(spec));
-  }
   specs.push_back(glOption());
   return CommandLine(
-      "specula serve [--bind ADDRESS] [--port PORT] [--scene NAME|FILE] [--gltf-scene N] [--camera N] [--max-sessions N] [--token SECRET] "
-      "[--gl BACKEND] [...]",
+      "specula serve [options]",
       "Serves a scene to browsers and thin clients on one port:\n"
       "  GET /         the browser client (files of --web-root)\n"
       "  GET /healthz  'ok' while the server runs (never needs the token)\n"
@@ -64,6 +55,7 @@ CommandLine serveOptions() {
       "  /ws           WebSocket, subprotocol specula.v1.json (proto3 JSON text) or specula.v1.proto (binary);\n"
       "                messages are defined in proto/specula.proto\n"
       "  GET /readyz   'ready', or 503 'full' / 'draining': whether a balancer should send new sessions here\n"
+      "  GET /settings-schema.json  every session setting: range or choices, default, protocol field\n"
       "Each session has its own camera, animation clock and settings and is rendered only when something\n"
       "changed. SIGTERM or SIGINT closes every client with code 1001 and exits (after --drain-seconds).",
       std::move(specs));
@@ -100,24 +92,18 @@ int runServe(std::span<const std::string> arguments) {
   auto stillDelay = options.integer("still-delay", 0, 60000);
   auto maxFps = options.number("max-fps");
   auto maxSize = options.size("max-size", 16384);
-  auto tessellation = parseTessellationOptions(options);
-  auto stillSamples = parseSamples(options, "still-samples");
   auto resumeLifetime = options.integer("resume-lifetime", 1, 7 * 24 * 3600);
   auto drainSeconds = options.integer("drain-seconds", 0, 3600);
   auto resumeSecret = readResumeSecret(options);
-  auto interactiveSamples = parseSamples(options, "interactive-samples");
-  passes::ReflectionSettings sessionReflection;  // every session starts with these
-  const Status search = parseSearchOptions(options, sessionReflection);
-  // A search named here is what the sessions run, not a ray cast the cost model prefers.
-  if (options.has("search")) sessionReflection.rayCast = passes::RayCastRule::Never;
+  session::SessionSettings sessionDefaults;  // every session starts with these
+  const Status settings = parseSettingOptions(options, session::sessionSettingsSchema(), {}, sessionDefaults);
+  applyImpliedOptions(options, sessionDefaults.reflection);
   for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
                                renderThreads ? Status{} : Error{renderThreads.error()},
                                encodeThreads ? Status{} : Error{encodeThreads.error()},
                                stillDelay ? Status{} : Error{stillDelay.error()}, maxFps ? Status{} : Error{maxFps.error()},
                                maxSize ? Status{} : Error{maxSize.error()},
-                               tessellation ? Status{} : Error{tessellation.error()}, search,
-                               stillSamples ? Status{} : Error{stillSamples.error()},
-                               interactiveSamples ? Status{} : Error{interactiveSamples.error()},
+                               settings,
                                resumeLifetime ? Status{} : Error{resumeLifetime.error()},
                                drainSeconds ? Status{} : Error{drainSeconds.error()}, resumeSecret ? Status{} : Error{resumeSecret.error()}})
     if (!status) return fail(status.error());
@@ -132,6 +118,7 @@ int runServe(std::span<const std::string> arguments) {
                                                        : "";
   serverOptions.webRoot = options.text("web-root");
   serverOptions.publicMetrics = options.has("public-metrics");
+  serverOptions.jsonDocuments["/settings-schema.json"] = session::settingsSchemaJson(sessionDefaults);
   if (auto problem = net::bindProblem(serverOptions)) return fail(*problem);  // before the slow scene and GL setup
 
   auto gltfChoice = parseGltfSceneOptions(options);
@@ -156,12 +143,9 @@ int runServe(std::span<const std::string> arguments) {
   config.hub.maxHeight = maxSize->second;
   config.hub.stillDelay = std::chrono::milliseconds(*stillDelay);
   config.hub.maxFps = *maxFps;
-  config.hub.defaults.reflection = sessionReflection;
-  config.hub.defaults.reflection.tessellation = *tessellation;
+  config.hub.defaults = sessionDefaults;
   config.hub.resumeSecret = *resumeSecret;
   config.hub.resumeLifetime = std::chrono::seconds(*resumeLifetime);
-  config.hub.defaults.stillSamples = *stillSamples;
-  config.hub.defaults.interactiveSamples = *interactiveSamples;
   config.hub.scheduler = {*renderThreads, *encodeThreads};
   config.server = serverOptions;
   auto service = Service::start(std::move(config));

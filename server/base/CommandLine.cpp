@@ -1,11 +1,11 @@
 #include "base/CommandLine.h"
 
-#include <iostream>
-
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <sstream>
+#include <iostream>
+#include <stdexcept>
 
 namespace specula {
 
@@ -18,44 +18,65 @@ std::optional<double> parseFinite(std::string_view text) {
   return value;
 }
 
+// CLI11's help with the command's own usage line first, then its summary.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  explicit HelpFormatter(std::string usage) : usage_(std::move(usage)) { column_width(30); }
+  std::string make_description(const CLI::App*) const override { return ""; }
+  std::string make_usage(const CLI::App* app, std::string) const override {
+    return "usage: " + usage_ + "\n\n" + app->get_description() + "\n";
+  }
+
+ private:
+  std::string usage_;
+};
+
 }  // namespace
 
 CommandLine::CommandLine(std::string usage, std::string summary, std::vector<OptionSpec> options)
-    : usage_(std::move(usage)), summary_(std::move(summary)), options_(std::move(options)) {}
+    : options_(std::move(options)), app_(std::make_unique<CLI::App>(std::move(summary))) {
+  app_->formatter(std::make_shared<HelpFormatter>(std::move(usage)));
+  app_->set_help_flag("-h,--help", "print this help");
+  for (const OptionSpec& option : options_) {
+    const std::string help = option.help + (option.defaultValue.empty() ? "" : " (default: " + option.defaultValue + ")");
+    CLI::Option* added = option.valueName.empty()
+                             ? app_->add_flag("--" + option.name, help)
+                             : app_->add_option("--" + option.name, values_[option.name], help)
+                                   ->type_name(option.valueName)
+                                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    added->allow_extra_args(false);
+  }
+}
 
-const OptionSpec* CommandLine::find(const std::string& name) const {
+CommandLine::CommandLine(CommandLine&&) noexcept = default;
+CommandLine& CommandLine::operator=(CommandLine&&) noexcept = default;
+CommandLine::~CommandLine() = default;
+
+const OptionSpec& CommandLine::find(const std::string& name) const {
   for (const OptionSpec& option : options_)
-    if (option.name == name) return &option;
-  return nullptr;
+    if (option.name == name) return option;
+  throw std::logic_error("the command asked for --" + name + ", which its option table does not declare");
 }
 
 Status CommandLine::parse(std::span<const std::string> arguments) {
-  for (std::size_t i = 0; i < arguments.size(); ++i) {
-    const std::string& argument = arguments[i];
-    if (argument == "--help" || argument == "-h") {
-      helpRequested_ = true;
-      continue;
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 takes them last first
+  try {
+    app_->parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    helpRequested_ = true;
+  } catch (const CLI::ExtrasError&) {
+    for (const std::string& extra : app_->remaining()) {
+      if (extra.starts_with("--")) return Error{"unknown option " + extra.substr(0, extra.find('=')) + " (see --help)"};
+      return Error{"unexpected argument '" + extra + "'; options start with -- (see --help)"};
     }
-    if (!argument.starts_with("--"))
-      return Error{"unexpected argument '" + argument + "'; options start with -- (see --help)"};
-    std::string name = argument.substr(2);
-    std::optional<std::string> value;
-    if (const std::size_t equals = name.find('='); equals != std::string::npos) {
-      value = name.substr(equals + 1);
-      name.resize(equals);
-    }
-    const OptionSpec* option = find(name);
-    if (!option) return Error{"unknown option --" + name + " (see --help)"};
-    if (option->valueName.empty()) {
-      if (value) return Error{"--" + name + " takes no value"};
-      values_[name] = "";
-      continue;
-    }
-    if (!value) {
-      if (i + 1 >= arguments.size()) return Error{"--" + name + " needs a value: --" + name + " " + option->valueName};
-      value = arguments[++i];
-    }
-    values_[name] = *value;
+    return Error{"unexpected arguments (see --help)"};
+  } catch (const CLI::ArgumentMismatch& error) {
+    for (const OptionSpec& option : options_)
+      if (!option.valueName.empty() && std::string(error.what()).find("--" + option.name) != std::string::npos)
+        return Error{"--" + option.name + " needs a value: --" + option.name + " " + option.valueName};
+    return Error{error.what()};
+  } catch (const CLI::ParseError& error) {
+    return Error{error.what()};
   }
   return {};
 }
@@ -68,23 +89,20 @@ std::optional<int> CommandLine::parseOrExit(std::span<const std::string> argumen
   return 0;
 }
 
-std::string CommandLine::help() const {
-  std::ostringstream out;
-  out << "usage: " << usage_ << "\n\n" << summary_ << "\n\noptions:\n";
-  for (const OptionSpec& option : options_) {
-    std::string left = "  --" + option.name + (option.valueName.empty() ? "" : " " + option.valueName);
-    out << left << std::string(left.size() < 30 ? 30 - left.size() : 1, ' ') << option.help;
-    if (!option.defaultValue.empty()) out << " (default: " << option.defaultValue << ")";
-    out << "\n";
-  }
-  out << "  --help                      print this help\n";
-  return out.str();
+std::string CommandLine::help() const { return app_->help(); }
+
+bool CommandLine::has(const std::string& name) const {
+  find(name);
+  return app_->count("--" + name) > 0;
+}
+
+bool CommandLine::declares(const std::string& name) const {
+  return std::any_of(options_.begin(), options_.end(), [&](const OptionSpec& option) { return option.name == name; });
 }
 
 std::string CommandLine::text(const std::string& name) const {
-  if (auto found = values_.find(name); found != values_.end()) return found->second;
-  const OptionSpec* option = find(name);
-  return option ? option->defaultValue : "";
+  const OptionSpec& option = find(name);
+  return has(name) ? values_.at(name) : option.defaultValue;
 }
 
 Result<double> CommandLine::number(const std::string& name) const {

@@ -1,15 +1,20 @@
 #pragma once
-// Options of one subcommand: `--name value`, `--name=value` or a bare `--flag`. The same table
-// parses the arguments and prints --help, so the help cannot drift from what is accepted.
+// Options of one subcommand: `--name value`, `--name=value` or a bare `--flag`, parsed by CLI11. The
+// same table parses the arguments and prints --help, so the help cannot drift from what is accepted.
 #include <glm/glm.hpp>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "base/Result.h"
+
+namespace CLI {
+class App;
+}
 
 namespace specula {
 
@@ -23,6 +28,9 @@ struct OptionSpec {
 class CommandLine {
  public:
   CommandLine(std::string usage, std::string summary, std::vector<OptionSpec> options);
+  CommandLine(CommandLine&&) noexcept;
+  CommandLine& operator=(CommandLine&&) noexcept;
+  ~CommandLine();
 
   // Parses arguments after the subcommand. --help sets helpRequested() instead of failing.
   Status parse(std::span<const std::string> arguments);
@@ -33,8 +41,12 @@ class CommandLine {
   bool helpRequested() const { return helpRequested_; }
   std::string help() const;
 
-  bool has(const std::string& name) const { return values_.contains(name); }
-  // The given value, else the option's default.
+  // Whether the arguments gave the option (a flag: whether it was set).
+  bool has(const std::string& name) const;
+  // Whether the table declares the option.
+  bool declares(const std::string& name) const;
+  // The given value, else the option's default. Asking for an option the table does not declare is
+  // a programming error: it throws std::logic_error.
   std::string text(const std::string& name) const;
 
   // Typed readers; each error names the option, what it expects and what it got.
@@ -47,11 +59,11 @@ class CommandLine {
   Result<std::vector<std::pair<int, int>>> sizeList(const std::string& name, int maxSide) const;
 
  private:
-  const OptionSpec* find(const std::string& name) const;
+  const OptionSpec& find(const std::string& name) const;
 
-  std::string usage_, summary_;
   std::vector<OptionSpec> options_;
-  std::map<std::string, std::string> values_;
+  std::unique_ptr<CLI::App> app_;
+  std::map<std::string, std::string> values_;  // every declared option's storage; given ones are has()
   bool helpRequested_ = false;
 };
 

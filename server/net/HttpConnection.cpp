@@ -144,6 +144,8 @@ HttpConnection::Response HttpConnection::respond(const http::request<http::empty
   }
   if (path == "/metrics" && options_.metricsText)
     return answer(http::status::ok, options_.metricsText(), "text/plain; version=0.0.4; charset=utf-8");
+  if (auto document = options_.jsonDocuments.find(path); document != options_.jsonDocuments.end())
+    return answer(http::status::ok, document->second, "application/json");
   if (auto file = files_.find(path)) return answer(http::status::ok, std::move(file->body), file->contentType);
   return answer(http::status::not_found, "not found: " + std::string(path) +
                                              " (routes: / the browser client, /healthz, /readyz, /metrics, /ws)\n");

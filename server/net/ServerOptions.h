@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,8 @@ struct ServerOptions {
   std::chrono::milliseconds firstMessageTimeout{5000};  // from the upgrade to the client's first message
   std::chrono::milliseconds idleTimeout{60000};      // no data (pings answered count) from the client
   std::function<std::string()> metricsText;          // GET /metrics body (Prometheus text format)
+  // Documents the service writes (path → JSON body), served beside the web root's files.
+  std::map<std::string, std::string, std::less<>> jsonDocuments;
   bool publicMetrics = false;                        // /metrics without the token (a scraper inside the cluster)
   // GET /readyz: why no new session is taken now ("full", "draining": 503), or nullopt (200 "ready").
   std::function<std::optional<std::string>()> notReady;

@@ -1,146 +1,112 @@
 #include "session/SettingsProtocol.h"
 
-#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <set>
 
-#include "math/SamplePattern.h"
+#include <google/protobuf/descriptor.h>
+
+#include "passes/ReflectionSettingsSchema.h"
+#include "session/SessionSettingsSchema.h"
 
 namespace specula::session {
 
+namespace {
+
+using google::protobuf::FieldDescriptor;
+
+const FieldDescriptor& fieldOf(const SettingInfo& setting) {
+  return *v1::RenderSettings::descriptor()->FindFieldByName(setting.protoField);
+}
+
+// A number field's value; 0 means unchanged, and -1 sets 0 where the range holds it.
+double numberOf(const v1::RenderSettings& message, const FieldDescriptor& field) {
+  const google::protobuf::Reflection& reflection = *message.GetReflection();
+  switch (field.cpp_type()) {
+    case FieldDescriptor::CPPTYPE_FLOAT: return reflection.GetFloat(message, &field);
+    case FieldDescriptor::CPPTYPE_INT32: return reflection.GetInt32(message, &field);
+    case FieldDescriptor::CPPTYPE_UINT32: return reflection.GetUInt32(message, &field);
+    default: return 0.0;
+  }
+}
+
+void setNumber(v1::RenderSettings& message, const FieldDescriptor& field, double value) {
+  const google::protobuf::Reflection& reflection = *message.GetReflection();
+  switch (field.cpp_type()) {
+    case FieldDescriptor::CPPTYPE_FLOAT: reflection.SetFloat(&message, &field, static_cast<float>(value)); break;
+    case FieldDescriptor::CPPTYPE_INT32: reflection.SetInt32(&message, &field, static_cast<int>(value)); break;
+    case FieldDescriptor::CPPTYPE_UINT32: reflection.SetUInt32(&message, &field, static_cast<std::uint32_t>(value)); break;
+    default: break;
+  }
+}
+
+// The value `update` gives the setting (a choice's index, or the number), nullopt when it leaves it
+// unchanged, or what is wrong with it.
+Result<std::optional<double>> updatedValue(const SettingInfo& setting, const v1::RenderSettings& update) {
+  const FieldDescriptor& field = fieldOf(setting);
+  const std::string name = "settings: " + std::string(field.name());
+  if (field.cpp_type() == FieldDescriptor::CPPTYPE_ENUM) {
+    const int number = update.GetReflection()->GetEnumValue(update, &field);
+    if (number == 0) return std::optional<double>();
+    for (std::size_t i = 0; i < setting.choices.size(); ++i)
+      if (field.enum_type()->FindValueByName(setting.choices[i].protoValue)->number() == number)
+        return std::optional<double>(static_cast<double>(i));
+    return Error{name + " has no value " + std::to_string(number) + "; it takes " + settingRange(setting)};
+  }
+  double value = numberOf(update, field);
+  if (value == 0.0) return std::optional<double>();
+  const bool zeroInRange = setting.type != SettingType::Choice && setting.min <= 0.0;
+  if (value == -1.0 && zeroInRange) value = 0.0;
+  const std::string accepted = settingRange(setting) + (zeroInRange ? " (-1 for 0)" : "");
+  char got[32];
+  std::snprintf(got, sizeof got, "%g", value);
+  if (setting.type == SettingType::Choice) {
+    if (auto index = findChoice(setting, got)) return std::optional<double>(*index);
+    return Error{name + " must be " + accepted + ", got " + got};
+  }
+  if (settingProblem(setting, value)) return Error{name + " must lie in " + accepted + ", got " + got};
+  return std::optional<double>(value);
+}
+
+}  // namespace
+
 v1::RenderSettings settingsToProto(const SessionSettings& settings) {
   v1::RenderSettings out;
-  out.set_method(settings.reflection.method == passes::ReflectionMethod::Search ? v1::SEARCH : v1::NONE);
-  const passes::TessellationSettings& t = settings.reflection.tessellation;
-  out.set_tessellation(t.mode == passes::TessellationMode::None    ? v1::TESSELLATION_NONE
-                       : t.mode == passes::TessellationMode::Paper ? v1::TESSELLATION_PAPER
-                                                                   : v1::TESSELLATION_CRACK_FREE);
-  out.set_metric(t.metric == passes::TessellationMetric::Pixels ? v1::METRIC_PIXELS : v1::METRIC_ANGLE);
-  out.set_threshold(t.threshold);
-  out.set_level(t.maxLevel == 0 ? -1 : t.maxLevel);
-  out.set_error_budget_px(settings.reflection.errorBudgetPixels == 0.0f ? -1.0f : settings.reflection.errorBudgetPixels);
-  out.set_resolution_scale(settings.resolutionScale);
-  out.set_jpeg_quality(static_cast<std::uint32_t>(settings.jpegQuality));
-  out.set_interactive_quality(static_cast<std::uint32_t>(settings.interactiveQuality));
-  out.set_still_samples(static_cast<std::uint32_t>(settings.stillSamples));
-  out.set_interactive_samples(static_cast<std::uint32_t>(settings.interactiveSamples));
-  out.set_plan(settings.reflection.plan == passes::PlanScope::Everything ? v1::PLAN_EVERYTHING : v1::PLAN_NEEDED);
-  switch (settings.reflection.search) {
-    case passes::SearchStrategy::Crosshair: out.set_search(v1::SEARCH_CROSSHAIR); break;
-    case passes::SearchStrategy::Hierarchy: out.set_search(v1::SEARCH_HIERARCHY); break;
-    case passes::SearchStrategy::ExplosionMap:
-      out.set_search(settings.reflection.explosionRefine ? v1::SEARCH_EXPLOSION_MAP_REFINED : v1::SEARCH_EXPLOSION_MAP);
-      break;
+  for (const SessionSetting& setting : sessionSettingsSchema()) {
+    const SettingInfo& info = setting.info;
+    if (info.protoField.empty()) continue;
+    const FieldDescriptor& field = fieldOf(info);
+    const double value = setting.read(settings);
+    if (field.cpp_type() == FieldDescriptor::CPPTYPE_ENUM) {
+      const std::string& protoValue = info.choices.at(static_cast<std::size_t>(value)).protoValue;
+      out.GetReflection()->SetEnumValue(&out, &field, field.enum_type()->FindValueByName(protoValue)->number());
+    } else if (info.type == SettingType::Choice) {
+      setNumber(out, field, std::stod(info.choices.at(static_cast<std::size_t>(value)).name));
+    } else {
+      setNumber(out, field, value == 0.0 ? -1.0 : value);
+    }
   }
-  switch (settings.reflection.rayCast) {
-    case passes::RayCastRule::WhenCheaper: out.set_ray_cast(v1::RAY_CAST_CHEAPER); break;
-    case passes::RayCastRule::Never: out.set_ray_cast(v1::RAY_CAST_NEVER); break;
-    case passes::RayCastRule::Always: out.set_ray_cast(v1::RAY_CAST_ALWAYS); break;
-  }
-  out.set_explosion_map_size(static_cast<std::uint32_t>(settings.reflection.explosionMapSize));
-  out.set_virtual_pixels(settings.reflection.virtualPixels == passes::VirtualPixels::AsPlaced ? v1::PIXELS_AS_PLACED : v1::PIXELS_EXACT_HIT);
-  out.set_extrusions(settings.reflection.solveExtrusions ? v1::EXTRUSIONS_SOLVE : v1::EXTRUSIONS_SEARCH);
   return out;
 }
 
-Status applySettingsUpdate(const v1::RenderSettings& update, SessionSettings& current) {
+Status applySettingsUpdate(const v1::RenderSettings& original, SessionSettings& current) {
+  // Protocol 1.0 clients name the refined explosion map as a search strategy of its own.
+  v1::RenderSettings update = original;
+  if (update.search() == v1::SEARCH_EXPLOSION_MAP_REFINED) {
+    update.set_search(v1::SEARCH_EXPLOSION_MAP);
+    if (update.explosion_refine() == v1::SWITCH_UNSPECIFIED) update.set_explosion_refine(v1::SWITCH_ON);
+  }
   SessionSettings settings = current;
-  passes::TessellationSettings& t = settings.reflection.tessellation;
-  switch (update.method()) {
-    case v1::SEARCH: settings.reflection.method = passes::ReflectionMethod::Search; break;
-    case v1::NONE: settings.reflection.method = passes::ReflectionMethod::None; break;
-    case v1::METHOD_UNSPECIFIED: break;
-    default: return Error{"settings: unknown method"};
+  std::set<std::string_view> named;
+  for (const SessionSetting& setting : sessionSettingsSchema()) {
+    if (setting.info.protoField.empty()) continue;
+    auto value = updatedValue(setting.info, update);
+    if (!value) return Error{value.error()};
+    if (!*value) continue;
+    setting.write(settings, **value);
+    named.insert(setting.info.name);
   }
-  switch (update.tessellation()) {
-    case v1::TESSELLATION_NONE: t.mode = passes::TessellationMode::None; break;
-    case v1::TESSELLATION_PAPER: t.mode = passes::TessellationMode::Paper; break;
-    case v1::TESSELLATION_CRACK_FREE: t.mode = passes::TessellationMode::CrackFree; break;
-    case v1::TESSELLATION_UNSPECIFIED: break;
-    default: return Error{"settings: unknown tessellation mode"};
-  }
-  switch (update.plan()) {
-    case v1::PLAN_NEEDED: settings.reflection.plan = passes::PlanScope::Needed; break;
-    case v1::PLAN_EVERYTHING: settings.reflection.plan = passes::PlanScope::Everything; break;
-    case v1::PLAN_UNSPECIFIED: break;
-    default: return Error{"settings: unknown plan scope"};
-  }
-  switch (update.search()) {
-    case v1::SEARCH_CROSSHAIR: settings.reflection.search = passes::SearchStrategy::Crosshair; break;
-    case v1::SEARCH_HIERARCHY: settings.reflection.search = passes::SearchStrategy::Hierarchy; break;
-    case v1::SEARCH_EXPLOSION_MAP:
-    case v1::SEARCH_EXPLOSION_MAP_REFINED:
-      settings.reflection.search = passes::SearchStrategy::ExplosionMap;
-      settings.reflection.explosionRefine = update.search() == v1::SEARCH_EXPLOSION_MAP_REFINED;
-      break;
-    case v1::SEARCH_UNSPECIFIED: break;
-    default: return Error{"settings: unknown search strategy"};
-  }
-  // A search the client names is what runs, not a ray cast the cost model prefers.
-  if (update.search() != v1::SEARCH_UNSPECIFIED) settings.reflection.rayCast = passes::RayCastRule::Never;
-  switch (update.ray_cast()) {
-    case v1::RAY_CAST_CHEAPER: settings.reflection.rayCast = passes::RayCastRule::WhenCheaper; break;
-    case v1::RAY_CAST_NEVER: settings.reflection.rayCast = passes::RayCastRule::Never; break;
-    case v1::RAY_CAST_ALWAYS: settings.reflection.rayCast = passes::RayCastRule::Always; break;
-    case v1::RAY_CAST_UNSPECIFIED: break;
-    default: return Error{"settings: unknown ray_cast rule"};
-  }
-  if (update.explosion_map_size() != 0) {
-    if (update.explosion_map_size() < static_cast<std::uint32_t>(passes::kMinExplosionMapSize) ||
-        update.explosion_map_size() > static_cast<std::uint32_t>(passes::kMaxExplosionMapSize))
-      return Error{"settings: explosion_map_size must be in [" + std::to_string(passes::kMinExplosionMapSize) + ", " +
-                   std::to_string(passes::kMaxExplosionMapSize) + "]"};
-    settings.reflection.explosionMapSize = static_cast<int>(update.explosion_map_size());
-  }
-  switch (update.virtual_pixels()) {
-    case v1::PIXELS_EXACT_HIT: settings.reflection.virtualPixels = passes::VirtualPixels::ExactHit; break;
-    case v1::PIXELS_AS_PLACED: settings.reflection.virtualPixels = passes::VirtualPixels::AsPlaced; break;
-    case v1::PIXELS_UNSPECIFIED: break;
-    default: return Error{"settings: unknown virtual pixels"};
-  }
-  switch (update.extrusions()) {
-    case v1::EXTRUSIONS_SOLVE: settings.reflection.solveExtrusions = true; break;
-    case v1::EXTRUSIONS_SEARCH: settings.reflection.solveExtrusions = false; break;
-    case v1::EXTRUSIONS_UNSPECIFIED: break;
-    default: return Error{"settings: unknown extrusions"};
-  }
-  switch (update.metric()) {
-    case v1::METRIC_PIXELS: t.metric = passes::TessellationMetric::Pixels; break;
-    case v1::METRIC_ANGLE: t.metric = passes::TessellationMetric::Angle; break;
-    case v1::METRIC_UNSPECIFIED: break;
-    default: return Error{"settings: unknown tessellation metric"};
-  }
-  if (update.threshold() != 0.0f) {
-    if (!std::isfinite(update.threshold()) || update.threshold() < 0.0f || update.threshold() > 1e4f)
-      return Error{"settings: threshold must be in (0, 1e4]"};
-    t.threshold = update.threshold();
-  }
-  if (update.level() != 0) {
-    if (update.level() < -1 || update.level() > passes::kMaxTessellationLevel)
-      return Error{"settings: level must be 0.." + std::to_string(passes::kMaxTessellationLevel) + " (-1 for 0)"};
-    t.maxLevel = std::max(0, update.level());
-  }
-  if (update.error_budget_px() != 0.0f) {
-    const float budget = update.error_budget_px() == -1.0f ? 0.0f : update.error_budget_px();
-    if (!(budget >= 0.0f && budget <= passes::kMaxErrorBudgetPixels)) return Error{"settings: error_budget_px must be in [0, 16] (-1 for 0)"};
-    settings.reflection.errorBudgetPixels = budget;
-  }
-  if (update.resolution_scale() != 0.0f) {
-    if (!std::isfinite(update.resolution_scale()) || update.resolution_scale() < 0.05f || update.resolution_scale() > 1.0f)
-      return Error{"settings: resolution_scale must be in [0.05, 1]"};
-    settings.resolutionScale = update.resolution_scale();
-  }
-  for (auto [value, field] : {std::pair{update.jpeg_quality(), &settings.jpegQuality},
-                              {update.interactive_quality(), &settings.interactiveQuality}}) {
-    if (value == 0) continue;
-    if (value > 100) return Error{"settings: JPEG qualities must be 1..100"};
-    *field = static_cast<int>(value);
-  }
-  for (auto [value, field] : {std::pair{update.still_samples(), &settings.stillSamples},
-                              {update.interactive_samples(), &settings.interactiveSamples}}) {
-    if (value == 0) continue;
-    if (value > 16 || math::sampleCountProblem(static_cast<int>(value))) return Error{"settings: samples must be 1, 2, 4, 8 or 16"};
-    *field = static_cast<int>(value);
-  }
+  passes::applyImpliedSettings(settings.reflection, [&](std::string_view name) { return named.contains(name); });
   current = settings;
   return {};
 }

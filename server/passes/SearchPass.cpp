@@ -14,7 +14,7 @@ constexpr GLuint kGroupSize = 64;  // local_size_x of search.comp
 // from: a closed convex mirror has one best point, other parts may have several local ones.
 constexpr int kConvexColdScanSide = 8, kColdScanSide = 16;
 constexpr int kConvexColdCandidates = 1, kColdCandidates = 3;
-constexpr GLuint kSearchPatchPointsBinding = 11;  // PATCH_POINTS_BINDING in common/search-core.glsl
+constexpr GLuint kSearchPatchPointsBinding = 11;  // PATCH_POINTS_BINDING in search/patch-newton.glsl
 }  // namespace
 
 Result<std::unique_ptr<SearchPass>> SearchPass::create(const gl::GlApi& gl) {

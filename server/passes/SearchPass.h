@@ -10,7 +10,7 @@
 
 namespace specula::passes {
 
-// The uniforms of shaders/common/search-core.glsl: per frame, then per mirror.
+// The uniforms of shaders/search/ (reflection-search.glsl and the strategies it includes): per frame, then per mirror.
 void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& frame);
 void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame, const MirrorSlots& mirror);
 

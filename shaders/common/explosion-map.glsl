@@ -1,6 +1,6 @@
 // Ofek & Rappoport's (1998) explosion map, §4: the directions of a mirror part's reflected eye rays,
 // seen from a centre C through a sphere about it, laid out like a circular environment map. Shared
-// by the map's build (explosion-map/) and its look-ups (common/search-core.glsl).
+// by the map's build (explosion-map/) and its look-ups (search/explosion-map-search.glsl).
 uniform vec3 explosionCentre;  // C: the part's bounding-sphere centre, world
 uniform mat3 explosionAxes;    // columns x, y, z of the map's frame; z points from C to the eye
 uniform vec2 explosionRadii;   // the near sphere's radius (bounds the part), the far one's (bounds the scene)

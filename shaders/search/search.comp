@@ -1,9 +1,9 @@
 #version 430 core
-// Reflection-point search (common/search-core.glsl) for the vertices of one object in one mirror,
+// Reflection-point search (search/reflection-search.glsl) for the vertices of one object in one mirror,
 // each seeded with its texel from last frame (coherence).
 layout(local_size_x = 64) in;
 
-#include "common/search-core.glsl"
+#include "search/reflection-search.glsl"
 #include "common/reflected-vertex-buffer.glsl"
 #include "common/search-statistics.glsl"
 

@@ -4,7 +4,7 @@
 // needs no search, is measured here. Carries no search code, so the many triangles that split
 // nothing cost little.
 #include "common/reflectable-triangle.glsl"
-#include "common/search-core.glsl"
+#include "search/reflection-search.glsl"
 #include "tessellation/tessellation-round.glsl"
 
 layout(local_size_x = TESSELLATION_GROUP_SIZE) in;

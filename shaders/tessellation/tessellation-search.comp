@@ -2,7 +2,7 @@
 // Round step 2, per requested edge (of one object in round 0, of the whole part later): its midpoint searched by the same search as scene
 // vertices, seeded between its ends' texels, and (pixel metric) its error. Runs only for the
 // requests, packed, so the large search code runs at full width.
-#include "common/search-core.glsl"
+#include "search/reflection-search.glsl"
 #include "common/search-statistics.glsl"
 #include "tessellation/tessellation-round.glsl"
 

@@ -247,7 +247,6 @@ void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resourc
 void setGBufferSamplers(const gl::ShaderProgram& program) {
   program.set("gbufferPosition", 0);
   program.set("gbufferNormal", 1);
-  program.set("gbufferSurface", static_cast<int>(kGBufferSurfaceUnit));
 }
 
 void setGBufferPixelMapping(const gl::ShaderProgram& program, const ReflectionResources& resources) {

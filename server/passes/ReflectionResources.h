@@ -142,7 +142,8 @@ inline constexpr GLuint kGBufferSurfaceUnit = 6;
 // Binds the G-buffer's position and normal textures to texture units 0 and 1 and its surface
 // coordinates to kGBufferSurfaceUnit, leaving unit 0 active.
 void bindGBufferTextures(const gl::GlApi& gl, const ReflectionResources& resources);
-// Points the program's (in use) gbufferPosition, gbufferNormal and gbufferSurface samplers at those units.
+// Points the program's (in use) gbufferPosition and gbufferNormal samplers at units 0 and 1; only the search's
+// programs have gbufferSurface (setSearchUniforms).
 void setGBufferSamplers(const gl::ShaderProgram& program);
 
 }  // namespace specula::passes

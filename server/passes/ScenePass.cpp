@@ -57,8 +57,10 @@ void ScenePass::execute(const FrameContext& frame) {
     const bool patches = !frame.scene.meshes[object.mesh].patches.empty();
     const gl::ShaderProgram& program = quadric ? quadric_ : patches ? patches_ : program_;
     program.use();
-    program.set("objectToWorld", frame.pose.objectToWorld[i]);
-    program.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
+    if (!quadric) {  // the quadric's proxy is placed by setMirrorQuadric
+      program.set("objectToWorld", frame.pose.objectToWorld[i]);
+      program.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
+    }
     if (patches)
       setPatchView(program, frame.pose.objectToWorld[i], frame.view.worldToClip(), {frame.target.width(), frame.target.height()});
     const scene::Material& material = frame.scene.materials[object.material];

@@ -50,6 +50,7 @@ void setSearchUniforms(const gl::ShaderProgram& program, const FrameContext& fra
   gl.ActiveTexture(GL_TEXTURE0);
   program.set("rayHierarchy", hierarchy ? 1 : 0);
   setGBufferSamplers(program);
+  program.set("gbufferSurface", static_cast<int>(kGBufferSurfaceUnit));
   program.set("eyePosition", frame.pose.camera.eye);
   program.set("maxWalkSteps", frame.settings.maxWalkSteps);
 }

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <string>
 
+#include "gl/GlErrors.h"
+
 namespace specula::gl {
 
 Result<RenderTarget> RenderTarget::create(const GlApi& gl, int width, int height) {
@@ -28,7 +30,7 @@ Result<RenderTarget> RenderTarget::create(const GlApi& gl, int width, int height
   const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    return Error{"off-screen framebuffer incomplete (status 0x" + std::to_string(status) + "); out of GPU memory?"};
+    return Error{"off-screen framebuffer incomplete (" + framebufferStatusName(status) + "); out of GPU memory?"};
   return target;
 }
 

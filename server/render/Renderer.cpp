@@ -6,6 +6,7 @@
 #include <limits>
 #include <span>
 
+#include "gl/GlErrors.h"
 #include "gl/GlObject.h"
 #include "gl/RenderTarget.h"
 #include "math/Camera.h"
@@ -269,7 +270,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
   result.planner.explored = role.explore.has_value();
   if (role.measure) learnCosts(plan, result);
   if (const GLenum error = gl.GetError(); error != GL_NO_ERROR)
-    return Error{"GL error 0x" + std::to_string(error) + " while rendering (driver: " + context_.info().renderer + ")"};
+    return Error{"GL error " + gl::glErrorName(error) + " while rendering (driver: " + context_.info().renderer + ")"};
   result.timings.totalMilliseconds = millisecondsSince(start);
   return result;
 }

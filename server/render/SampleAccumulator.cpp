@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "gl/GlErrors.h"
+
 namespace specula::render {
 
 Result<SampleAccumulator> SampleAccumulator::create(const gl::GlApi& gl) {
@@ -38,7 +40,8 @@ Status SampleAccumulator::begin(const gl::RenderTarget& frame) {
     const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-      return Error{"the anti-aliasing sum's framebuffer is incomplete (status 0x" + std::to_string(status) + "); out of GPU memory?"};
+      return Error{"the anti-aliasing sum's framebuffer is incomplete (" + gl::framebufferStatusName(status) +
+                   "); out of GPU memory?"};
     sum_.emplace(std::move(sum));
   }
   gl.BindFramebuffer(GL_FRAMEBUFFER, sum_->framebuffer.id());

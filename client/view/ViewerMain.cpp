@@ -3,7 +3,6 @@
 // once-a-second line on stdout show fps, latency, server timings and search/tessellation statistics.
 #include <algorithm>
 #include <cstdio>
-#include <iostream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -13,15 +12,13 @@
 #include "ViewerLoop.h"
 #include "ViewerOptions.h"
 #include "ViewerWindow.h"
+#include "base/CommandFailure.h"
 
 namespace {
 
 using namespace specula;
 
-int fail(const std::string& message) {
-  std::cerr << "specula-view: " << message << "\n";
-  return 1;
-}
+constexpr CommandFailure fail{"specula-view"};
 
 }  // namespace
 

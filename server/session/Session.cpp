@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <utility>
 #include <glm/gtc/quaternion.hpp>
 
 #include "CameraConversions.h"
@@ -301,7 +302,9 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
 
 Status Session::applySettings(const v1::RenderSettings& update) {
   std::lock_guard lock(mutex_);
-  return applySettingsUpdate(update, state_.settings);
+  Status applied = applySettingsUpdate(update, state_.settings);
+  settingsChanged_ = settingsChanged_ || applied;
+  return applied;
 }
 
 Status Session::applyResize(const v1::Resize& resize) {
@@ -399,6 +402,7 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     lastOutput_ = std::move(rendered);
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
+    if (std::exchange(settingsChanged_, false)) *frame.mutable_settings() = settingsToProto(state_.settings);
     if (const SignedResume* signedResume = hub_.signedResume()) frame.set_resume_token(signedResume->issue(state_, now, WallClock::now()));
     sink = sink_;
   }

@@ -77,6 +77,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   SessionState state_;
   bool dirty_ = false;        // something changed since the last frame started
   bool busy_ = false;         // a frame is being rendered or encoded
+  bool settingsChanged_ = false;  // the next frame carries the settings, so clients show what is in effect
   bool lastFrameStill_ = true;
   std::optional<RenderJob> lastJob_;                  // the last frame delivered and the render it showed
   std::shared_ptr<const RenderOutput> lastOutput_;

@@ -37,7 +37,7 @@ output=$("$specula" render --scene quad --size 160x120 --tessellation none --out
 check "--tessellation none runs no tessellation pass" bash -c "! grep -q tessellation <<<'$output'"
 fails_with "a bad tessellation mode lists the modes" "--tessellation expects none, paper or crack-free" render --tessellation fine
 fails_with "a bad metric lists the metrics" "--metric expects pixels or angle" render --metric px
-fails_with "a negative threshold is refused" "--threshold expects a number >= 0" render --threshold -1
+fails_with "a negative threshold is refused" "--threshold expects a number in [0, 10000]" render --threshold -1
 fails_with "a level past the bound is refused" "--level expects an integer in [0, 8]" render --level 9
 fails_with "an unknown method lists the methods" "--method expects search, explosion-map, environment-map, raytrace or none" render --method cubemap
 output=$("$specula" render --scene mesh-sphere --size 160x120 --method explosion-map --ray-cast never --out "$work/em.png" 2>&1)
@@ -54,11 +54,11 @@ check "--extrusions search searches the cylinder's mesh" bash -c "grep -q gbuffe
 fails_with "unknown extrusion handling is refused" "--extrusions expects solve or search, got 'exact'" render --extrusions exact
 fails_with "unknown virtual pixels are refused" "--virtual-pixels expects exact-hit or as-placed, got 'smooth'" render --virtual-pixels smooth
 fails_with "an unknown search lists the searches" "--search expects crosshair, hierarchy or explosion-map, got 'walk'" render --search walk
-fails_with "a G-buffer scale past the bound is refused" "--gbuffer-scale expects texels per pixel from 0.125 to 4, got '8'" render --gbuffer-scale 8
-fails_with "a non-numeric G-buffer scale is refused" "--gbuffer-scale expects texels per pixel" render --gbuffer-scale fine
+fails_with "a G-buffer scale past the bound is refused" "--gbuffer-scale expects a number in [0.125, 4], got '8'" render --gbuffer-scale 8
+fails_with "a non-numeric G-buffer scale is refused" "--gbuffer-scale expects a number in [0.125, 4]" render --gbuffer-scale fine
 fails_with "a G-buffer precision other than 32 or 16 is refused" "--gbuffer-precision expects 32 or 16" render --gbuffer-precision 8
 fails_with "a cube face past the bound is refused" "--environment-size expects an integer in [8, 2048]" render --environment-size 4096
-fails_with "a margin past the bound is refused" "--margin expects a share in [0, 1]" render --margin 2
+fails_with "a margin past the bound is refused" "--margin expects a number in [0, 1]" render --margin 2
 fails_with "a bad plan scope names the choices" "--plan expects needed or everything, got 'some'" render --plan some
 output=$("$specula" render --scene checker-sphere --size 96x72 --out "$work/p.png" 2>&1)
 check "render prints the plan per mirror part: a small mirror is ray-cast" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): ray-cast 1 objects (289 vertices); 0 objects" <<<"$output"
@@ -79,7 +79,7 @@ output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast never 
 check "--uncovered background ray-casts none" grep -q "; 0 uncovered pixels ray-cast" <<<"$output"
 output=$("$specula" render --scene checker-sphere --size 16x12 --error-budget 16 --out "$work/tiny.png" 2>&1)
 check "a mirror narrower than the error budget shows its own colour" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): own colour, drew 0 objects (0 vertices); 0 objects, 0 vertices left out (behind it or in its shadow); 1 objects (289 vertices) under the 16 px error budget" <<<"$output"
-fails_with "a negative error budget is refused by name" "--error-budget expects pixels in [0, 16], got '-1'" render --error-budget -1
+fails_with "a negative error budget is refused by name" "--error-budget expects a number in [0, 16], got '-1'" render --error-budget -1
 fails_with "an unknown uncovered-pixel fill names the choices" "--uncovered expects ray-cast or background, got 'grey'" render --uncovered grey
 check "--plan everything renders too" "$specula" render --scene checker-sphere --size 96x72 --plan everything --out "$work/pe.png"
 "$specula" render --method environment-map --environment-size 32 --gbuffer-scale 0.5 --gbuffer-precision 16 --size 96x72 --out "$work/env.png" >"$work/env.txt" 2>&1

@@ -194,7 +194,10 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
     settings.mutable_settings()->set_still_samples(8);
     settings.mutable_settings()->set_interactive_samples(2);
     ASSERT_TRUE(client->send(settings).ok());
-    ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 5; }));
+    // A frame after the update carries the settings in effect, with what the server implied.
+    ASSERT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) {
+      return m.has_frame() && m.frame().has_settings() && m.frame().settings().ray_cast() == v1::RAY_CAST_NEVER;
+    }));
     client->close();
   }
   auto again = rig.connect(GetParam());
@@ -209,7 +212,8 @@ TEST_P(StreamingServer, ResumeTokenRestoresCameraAnimationAndSettings) {
   EXPECT_EQ(welcome.settings().level(), 2);
   EXPECT_EQ(welcome.settings().jpeg_quality(), 70u);
   EXPECT_EQ(welcome.settings().plan(), v1::PLAN_EVERYTHING);
-  EXPECT_EQ(welcome.settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
+  EXPECT_EQ(welcome.settings().search(), v1::SEARCH_EXPLOSION_MAP) << "protocol 1.0's refined map: the map, refined";
+  EXPECT_EQ(welcome.settings().explosion_refine(), v1::SWITCH_ON);
   EXPECT_EQ(welcome.settings().explosion_map_size(), 512u);
   EXPECT_EQ(welcome.settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
   EXPECT_EQ(welcome.settings().extrusions(), v1::EXTRUSIONS_SEARCH);

@@ -1,0 +1,88 @@
+#include "scene/gltf/GltfObjects.h"
+
+#include <cmath>
+#include <utility>
+
+#include "math/Transform.h"
+#include "scene/MeshTopology.h"
+#include "scene/SceneChecks.h"
+#include "scene/gltf/GltfMeshes.h"
+
+namespace specula::scene::gltf {
+
+namespace {
+
+// Placed in world space once (objects keep the identity): any matrix glTF allows, shear included.
+void moveToWorld(Mesh& part, const glm::dmat4& world) {
+  const glm::mat4 toWorld(world);
+  const glm::mat3 normals = math::normalMatrix(toWorld);
+  for (Vertex& v : part.vertices) {
+    v.position = glm::vec3(toWorld * glm::vec4(v.position, 1.0f));
+    v.normal = glm::normalize(normals * v.normal);
+  }
+  // A mirroring transform turns the winding; glTF keeps fronts where normals point.
+  if (glm::determinant(glm::dmat3(world)) < 0.0)
+    for (std::size_t t = 0; t < part.indices.size(); t += 3) std::swap(part.indices[t + 1], part.indices[t + 2]);
+}
+
+}  // namespace
+
+ObjectPlacer::ObjectPlacer(const tinygltf::Model& model, MaterialTable& materials, ImportedGltfScene& imported)
+    : model_(model), materials_(materials), imported_(imported) {}
+
+Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world) {
+  const tinygltf::Node& node = model_.nodes[index];
+  if (node.mesh < 0) return {};
+  if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
+    return Error{"node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
+                 std::to_string(model_.meshes.size())};
+  if (!(std::abs(glm::determinant(glm::dmat3(world))) > 1e-18)) {
+    imported_.notes.push_back("node " + std::to_string(index) + " has a singular transform (a zero scale): not drawn");
+    return {};
+  }
+  const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(node.mesh)];
+  const std::string base = node.name.empty() ? "node " + std::to_string(index) : node.name;
+  for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+    Result<Mesh> part = readPrimitive(model_, source.primitives[p],
+                                      "primitive " + std::to_string(p) + " of mesh " + std::to_string(node.mesh));
+    if (!part) return Error{part.error()};
+    if ((vertices_ += part->vertices.size()) > kMaxVerticesPerScene)
+      return Error{"the scene has more than " + std::to_string(kMaxVerticesPerScene) + " vertices, the limit per scene"};
+    moveToWorld(part.value(), world);
+    part->name = uniqueName(source.primitives.size() > 1 ? base + " #" + std::to_string(p) : base, base);
+    if (Status added = addObject(std::move(part.value()), source.primitives[p].material); !added) return added;
+  }
+  return {};
+}
+
+// `wanted`, or else the first of "base (2)", "base (3)", ... no object has yet.
+std::string ObjectPlacer::uniqueName(const std::string& wanted, const std::string& base) {
+  std::string name = wanted;
+  for (int copy = 2; names_.count(name) > 0; ++copy) name = base + " (" + std::to_string(copy) + ")";
+  names_.insert(name);
+  return name;
+}
+
+Status ObjectPlacer::addObject(Mesh part, int material) {
+  Result<SceneMaterial> converted = materials_.materialOf(material);
+  if (!converted) return Error{converted.error()};
+  Scene& scene = imported_.scene;
+  const bool closed = topology::isWatertight(part);
+  SceneObject object;
+  object.name = part.name;
+  scene.meshes.push_back(std::move(part));
+  object.mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+  object.material = converted->index;
+  if (converted->chrome && closed) {
+    object.mirror = MirrorInfo{};
+    object.mirror->curvature = MirrorCurvature::Mixed;
+  } else if (converted->chrome) {
+    scene.materials[converted->index].reflectivity = 0.0f;
+    imported_.notes.push_back("'" + object.name +
+                              "' has a mirror material but an open mesh (a mirror needs a closed one): drawn in its colour");
+  }
+  scene.objects.push_back(std::move(object));
+  return {};
+}
+
+}  // namespace specula::scene::gltf

@@ -1,0 +1,38 @@
+#pragma once
+// The meshes on a glTF scene's nodes as scene objects: one per primitive, stored in world space.
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <glm/glm.hpp>
+#include <set>
+#include <string>
+
+#include "base/Result.h"
+#include "scene/GltfImporter.h"
+#include "scene/Mesh.h"
+#include "scene/gltf/GltfMaterials.h"
+
+namespace specula::scene::gltf {
+
+// Adds node meshes to the imported scene, each object under a name unique in the scene, with its
+// material (a chrome one on a closed mesh makes it a mirror of mixed curvature); at most
+// kMaxVerticesPerScene vertices in all.
+class ObjectPlacer {
+ public:
+  ObjectPlacer(const tinygltf::Model& model, MaterialTable& materials, ImportedGltfScene& imported);
+
+  // Node `index`'s mesh, if it has one, placed at `world`; a singular transform leaves it out, with a note.
+  Status placeNodeMesh(std::size_t index, const glm::dmat4& world);
+
+ private:
+  std::string uniqueName(const std::string& wanted, const std::string& base);
+  Status addObject(Mesh part, int material);
+
+  const tinygltf::Model& model_;
+  MaterialTable& materials_;
+  ImportedGltfScene& imported_;
+  std::size_t vertices_ = 0;
+  std::set<std::string> names_;
+};
+
+}  // namespace specula::scene::gltf

@@ -1,0 +1,57 @@
+#include "scene/gltf/GltfScene.h"
+
+#include <utility>
+#include <vector>
+
+#include "scene/SceneChecks.h"
+#include "scene/gltf/GltfCamera.h"
+#include "scene/gltf/GltfLights.h"
+#include "scene/gltf/GltfMaterials.h"
+#include "scene/gltf/GltfNodes.h"
+#include "scene/gltf/GltfObjects.h"
+
+namespace specula::scene::gltf {
+
+namespace {
+
+// The scene asked for, else the file's default scene, else its first.
+Result<std::size_t> chosenScene(const tinygltf::Model& model, const GltfSceneChoice& choice) {
+  if (model.scenes.empty()) return Error{"the file holds no scene (\"scenes\" is empty), so nothing is placed to draw"};
+  const std::size_t chosen = choice.scene ? *choice.scene : model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene) : 0;
+  if (chosen >= model.scenes.size())
+    return Error{"there is no scene " + std::to_string(chosen) + " (the file has " + std::to_string(model.scenes.size()) +
+                 "; pick one of 0.." + std::to_string(model.scenes.size() - 1) + " with --gltf-scene, or \"scene\" in an include)"};
+  return chosen;
+}
+
+}  // namespace
+
+Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const DecodedImages& images,
+                                         const GltfSceneChoice& choice, std::string name) {
+  ImportedGltfScene imported;
+  imported.scene.name = std::move(name);
+  imported.scene.background = {0.05f, 0.06f, 0.08f};
+  Result<std::size_t> chosen = chosenScene(model, choice);
+  if (!chosen) return Error{chosen.error()};
+  if (Status named = checkMirrorRuleNames(model, choice.mirrors); !named) return Error{named.error()};
+
+  MaterialTable materials(model, images, choice.mirrors, imported.scene, imported.notes);
+  ObjectPlacer objects(model, materials, imported);
+  std::vector<NodeAttachment> cameras, lights;  // in the order first met
+  const Status walked = walkNodeTree(model, chosen.value(), [&](std::size_t index, const glm::dmat4& world) {
+    const tinygltf::Node& node = model.nodes[index];
+    if (node.camera >= 0) cameras.push_back({node.camera, world});
+    if (const auto light = nodeLight(node)) lights.push_back({*light, world});
+    return objects.placeNodeMesh(index, world);
+  });
+  if (!walked) return Error{walked.error()};
+  if (imported.scene.objects.empty()) return Error{"scene " + std::to_string(chosen.value()) + " draws no mesh"};
+
+  if (Status placed = placeCamera(model, cameras, choice.camera, chosen.value(), imported); !placed)
+    return Error{placed.error()};
+  if (Status lit = addLights(model, lights, imported); !lit) return Error{lit.error()};
+  if (auto problem = sceneProblem(imported.scene)) return Error{*problem};
+  return imported;
+}
+
+}  // namespace specula::scene::gltf

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math/Transform.h"
+
 namespace specula::passes {
 
 glm::mat4 FrameView::worldToClip(glm::vec2 widen, float farScale) const {
@@ -32,6 +34,7 @@ glm::mat4 FrameContext::gbufferWorldToClip() const {
 void FrameContext::setReflectedObject(const gl::ShaderProgram& program, const ReflectionSlotRange& range) const {
   const glm::mat4& objectToWorld = pose.objectToWorld[range.object];
   program.set("objectToWorld", objectToWorld);
+  program.set("normalToWorld", math::normalMatrix(objectToWorld));
   program.set("firstSlot", static_cast<unsigned>(range.firstSlot));
 }
 

@@ -54,8 +54,8 @@ struct FrameContext {
   std::size_t searchMesh(std::size_t mirrorObject) const;
   // The eye's projection onto the G-buffer: the frame's, widened by the G-buffer's margin.
   glm::mat4 gbufferWorldToClip() const;
-  // Sets objectToWorld and firstSlot: the uniforms naming one reflected object and its search
-  // slots, for every program that reads them.
+  // Sets objectToWorld, normalToWorld and firstSlot: the uniforms naming one reflected object
+  // and its search slots, for every program that reads them.
   void setReflectedObject(const gl::ShaderProgram& program, const ReflectionSlotRange& range) const;
 };
 

@@ -126,7 +126,9 @@ void SearchPass::execute(const FrameContext& frame) {
       const auto vertexCount = static_cast<GLuint>(frame.scene.meshes[object.mesh].vertices.size());
       if (vertexCount == 0) continue;
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, frame.meshes.vertexBuffer(object.mesh));
-      frame.setReflectedObject(program_, *range);
+      // Not setReflectedObject: the search reads no normals, so its program has no normalToWorld.
+      program_.set("objectToWorld", frame.pose.objectToWorld[range->object]);
+      program_.set("firstSlot", static_cast<unsigned>(range->firstSlot));
       program_.set("vertexCount", static_cast<unsigned>(vertexCount));
       gl.DispatchCompute((vertexCount + kGroupSize - 1) / kGroupSize, 1, 1);
     }

@@ -55,7 +55,6 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range,
                                   std::optional<GLintptr> indirect) const {
   frame.setReflectedObject(objects_, range);
-  objects_.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[range.object]));
   setMaterial(objects_, frame.scene.materials[frame.scene.objects[range.object].material], frame.textures);
   const std::size_t mesh = frame.scene.objects[range.object].mesh;
   if (indirect) frame.meshes.drawIndirect(mesh, *indirect);

@@ -64,7 +64,7 @@
     state.socket = socket;
     socket.onopen = () => {
       const [width, height] = viewportSize();
-      const hello = { protocolVersion: 1, width, height, quality: Number($('quality').value) };
+      const hello = { protocolVersion: 1, width, height };  // the session's settings come with the Welcome
       if (state.resumeToken) hello.resumeToken = state.resumeToken;
       send({ hello });
     };
@@ -227,41 +227,7 @@
   $('scrub').addEventListener('change', () => { scrubbing = false; });
   $('speed').addEventListener('change', () => animation({ speed: Number($('speed').value) }));
 
-  function sendSettings() {
-    const level = Number($('level').value);
-    const threshold = Number($('threshold').value);
-    if (!(threshold > 0)) { showStatus('threshold must be a positive number'); return; }
-    send({ settings: {
-      method: $('method').value, search: $('search').value, explosionMapSize: Number($('explosionMapSize').value),
-      virtualPixels: $('virtualPixels').value, extrusions: $('extrusions').value, rayCast: $('rayCast').value, plan: $('plan').value, tessellation: $('tessellation').value, metric: $('metric').value,
-      threshold, level: level === 0 ? -1 : level,
-      jpegQuality: Number($('quality').value), resolutionScale: Number($('scale').value),
-      stillSamples: Number($('stillSamples').value), interactiveSamples: Number($('interactiveSamples').value), ...nextInput(),
-    } });
-  }
-  // A search the user picks is what runs: the planner's ray cast is turned off with it.
-  $('search').addEventListener('change', () => { $('rayCast').value = 'RAY_CAST_NEVER'; });
-  for (const id of ['method', 'search', 'explosionMapSize', 'virtualPixels', 'extrusions', 'rayCast', 'plan', 'tessellation', 'metric', 'threshold', 'level', 'quality', 'scale', 'stillSamples', 'interactiveSamples'])
-    $(id).addEventListener('change', sendSettings);
-
-  function showSettings(settings) {
-    const set = (id, value) => { if (value !== undefined && value !== null) $(id).value = value; };
-    set('method', settings.method);
-    set('search', settings.search);
-    set('explosionMapSize', settings.explosionMapSize);
-    set('virtualPixels', settings.virtualPixels);
-    set('extrusions', settings.extrusions);
-    set('rayCast', settings.rayCast);
-    set('plan', settings.plan);
-    set('tessellation', settings.tessellation);
-    set('metric', settings.metric);
-    set('threshold', settings.threshold);
-    set('level', settings.level === -1 ? 0 : settings.level);
-    set('quality', settings.jpegQuality);
-    set('scale', String(settings.resolutionScale));
-    set('stillSamples', String(settings.stillSamples));
-    set('interactiveSamples', String(settings.interactiveSamples));
-  }
+  function showSettings(settings) { if (settings) SpeculaSettings.show(settings); }
 
   // ---- viewport ----
   function viewportSize() {
@@ -360,26 +326,36 @@
     while (state.frameTimes.length && now - state.frameTimes[0] > 1000) state.frameTimes.shift();
     const { jpeg, ...described } = frame;
     state.frame = { ...described, jpegBytes };
+    showSettings(frame.settings);  // after a settings change: what the server runs, with what it implied
     state.framesDrawn++;
     if (!scrubbing) $('scrub').value = String(frame.sceneTimeMs % Number($('scrub').max));
     $('time').textContent = `${(frame.sceneTimeMs / 1000).toFixed(2)} s`;
     updateOverlay();
   }
 
-  const optionText = (id) => $(id).selectedOptions[0]?.textContent ?? '';
+  const optionText = (id) => $(id)?.selectedOptions[0]?.textContent ?? '';
 
   function updateOverlay() {
     if (!state.frame) return;
-    const searching = $('method').value === 'SEARCH';
+    const searching = $('method')?.value === 'SEARCH';
     SpeculaStatistics.show(overlay, state.frame, {
-      fps: state.frameTimes.length, latencyMs: state.latencyMs, methodName: optionText('method'),
-      searchName: searching ? optionText('search').replace(/\s*\(.*\)$/, '') : null,  // without its credit: "crosshair"
+      fps: state.frameTimes.length, latencyMs: state.latencyMs, methodName: SpeculaSettings.describe('method'),
+      searchName: searching ? optionText('search') : null,
     });
   }
 
   if (!('WebSocket' in window) || !('createImageBitmap' in window)) {
     showStatus('This browser lacks WebSocket or createImageBitmap; use a current Chrome, Firefox or Safari.');
   } else {
-    connect();
+    // The settings panel first, so the Welcome's settings have controls to show them in.
+    const token = params.get('token');
+    fetch(`settings-schema.json${token ? `?token=${encodeURIComponent(token)}` : ''}`)
+      .then((response) => (response.ok ? response.json() : Promise.reject(new Error(`HTTP ${response.status}`))))
+      .then((schema) => SpeculaSettings.build($('settings'), schema, {
+        send: (update) => send({ settings: { ...update, ...nextInput() } }),
+        refuse: (problem) => showStatus(problem),
+      }))
+      .catch((error) => showStatus(`No settings panel: the server's settings schema did not load (${error.message}).`))
+      .finally(connect);
   }
 })();

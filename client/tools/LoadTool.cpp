@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
        })
     specs.push_back(spec);
   CommandLine options(
-      "specula-load [--url ws://HOST:PORT] [--sessions N] [--seconds S] [--size WxH] [--json FILE|-]",
+      "specula-load [options]",
       "Opens N sessions at once, each orbiting the scene on its own camera path and sending camera updates at\n"
       "--input-hz, for --seconds after a --warmup. Prints per-session and aggregate frames per second,\n"
       "input-to-frame latency percentiles (update sent → frame reflecting it received), skipped frames,\n"

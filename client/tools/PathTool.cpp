@@ -66,8 +66,7 @@ int main(int argc, char** argv) {
        })
     specs.push_back(spec);
   CommandLine options(
-      "specula-path --path FILE.json|FILE.csv [--url ws://HOST:PORT] [--pace frames|realtime] [--fps N] "
-      "[--size WxH] [--csv FILE] [--frames-dir DIR]",
+      "specula-path --path FILE.json|FILE.csv [options]",
       "Samples a keyframed camera path (linear between keys; optional scene_time seeks the paused animation)\n"
       "--fps times per path second and plays it against a server. --pace frames sends the next sample once the\n"
       "frame for the previous one arrived (every sample gets its frame); --pace realtime sends samples on the\n"

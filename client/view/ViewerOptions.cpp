@@ -15,7 +15,7 @@ CommandLine viewerCommandLine() {
        })
     specs.push_back(spec);
   return CommandLine(
-      "specula-view [--url ws://HOST:PORT] [--size WxH] [--frames N] [--seconds S]",
+      "specula-view [options]",
       "Opens a window on a Specula server's stream. Drag: orbit; right-drag or shift-drag: pan; wheel: zoom;\n"
       "arrows: orbit; +/-: zoom; space: play/pause; Esc: quit. Statistics are in the window title and printed\n"
       "once a second. --frames or --seconds end the run (scripts, tests).",

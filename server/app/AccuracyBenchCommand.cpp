@@ -20,8 +20,7 @@ namespace {
 CommandLine accuracyBenchOptions() {
   const bench::AccuracyBenchOptions defaults;
   return CommandLine(
-      "specula bench accuracy [--scene NAME|FILE] [--size WxH] [--poses N] [--orbit DEG] [--seconds S] [--out DIR] "
-      "[--no-plot] [--gl BACKEND]",
+      "specula bench accuracy [options]",
       "What each step of accuracy costs in time on one scene. Renders a camera path (the camera swings\n"
       "around its target while the scene animates) with every method and setting: the environment-map\n"
       "baseline, the search without tessellation, adaptive pixel and angle thresholds, full levels 1-4,\n"

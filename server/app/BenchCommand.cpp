@@ -1,15 +1,18 @@
 // `specula bench`: the scene bench, or the subcommand its first argument names.
 #include "app/BenchCommands.h"
 #include "app/Commands.h"
+#include "base/Subcommands.h"
 
 namespace specula::app {
 
 int runBench(std::span<const std::string> arguments) {
-  const std::string subcommand = arguments.empty() ? "" : arguments.front();
-  if (subcommand == "tessellation") return runTessellationBench(arguments.subspan(1));
-  if (subcommand == "accuracy") return runAccuracyBench(arguments.subspan(1));
-  if (subcommand == "serve") return runServeBench(arguments.subspan(1));
-  return runSceneBench(arguments);
+  return runSubcommand("specula bench", "Measures Specula: the scene bench, or one of these.",
+                       {
+                           {"tessellation", "tessellation settings against the exact reflection", runTessellationBench},
+                           {"accuracy", "every method and setting against the ray tracer: error against time", runAccuracyBench},
+                           {"serve", "streaming: sessions x sizes against real `specula serve` processes", runServeBench},
+                       },
+                       arguments, runSceneBench);
 }
 
 }  // namespace specula::app

@@ -39,9 +39,7 @@ CommandLine benchOptions() {
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
-      "specula bench [tessellation|accuracy|serve] [--scenes LIST] [--gltf-scene N] [--camera N] [--size WxH | --sizes LIST] [--frames N] [--cold-size WxH|none] [--no-reference] [--pass-timing per-pass|frame] [--samples N] "
-      "[--search crosshair|hierarchy|explosion-map] [--explosion-map-size N] [--explosion-refine on|off] [--explosion-placement eye-ray|mirror] [--virtual-pixels exact-hit|as-placed] [--extrusions solve|search] "
-      "[--plan needed|everything] [--ray-cast cheaper|never|always] [--error-budget PX] [--uncovered ray-cast|background] [--csv FILE] [--json FILE] [--gl BACKEND]",
+      "specula bench [tessellation|accuracy|serve] [options]",
       "Measures each scene along its own animation at 60 frames per second: median time per pass (after a\n"
       "cold first frame, reported apart because it includes shader compilation), search steps with\n"
       "frame-to-frame coherence and from a cold start, reflection-point error in pixels against the exact\n"

@@ -24,8 +24,7 @@ namespace {
 
 CommandLine serveBenchOptions() {
   return CommandLine(
-      "specula bench serve [--scene NAME|FILE] [--sessions LIST] [--sizes LIST] [--seconds S] [--warmup S] "
-      "[--encoding proto|json] [--render-threads N] [--instances N [--haproxy-config FILE]] [--csv FILE] [--json FILE] [--gl BACKEND]",
+      "specula bench serve [options]",
       "Starts the streaming service in this process on a free loopback port and, for every (sessions, size),\n"
       "runs that many WebSocket clients, each orbiting the scene on its own camera path and sending camera\n"
       "updates at 60 Hz. Measures per session: frames per second, input-to-frame latency (a camera update\n"

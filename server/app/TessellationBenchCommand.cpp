@@ -16,8 +16,7 @@ namespace {
 
 CommandLine tessellationBenchOptions() {
   return CommandLine(
-      "specula bench tessellation [--scenes LIST] [--size WxH] [--frames N] [--time SECONDS] [--csv FILE] "
-      "[--json FILE] [--gl BACKEND]",
+      "specula bench tessellation [options]",
       "Measures every tessellation setting on each scene at one pose: none; full tessellation at levels 1-5;\n"
       "crack-free adaptive with Szabo's angle metric (0.1 ... 0.001) and the pixel metric (2, 1, 0.5 px) at\n"
       "level 5. For each: triangles and vertices drawn, reflection searches (scene vertices and new edge\n"

@@ -35,7 +35,6 @@ CommandLine accuracyBenchOptions() {
       {
           {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
           {"size", "WxH", "frame size in pixels", "640x480"},
-      {"sizes", "LIST", "comma-separated frame sizes, each scene measured at each (instead of --size)", "--size"},
           {"poses", "N", "camera-path poses per setting, each timed and compared", std::to_string(defaults.poses)},
           {"orbit", "DEG", "how far the camera swings around its target along the path, 0 to 180",
            std::to_string(static_cast<int>(defaults.orbitDegrees))},

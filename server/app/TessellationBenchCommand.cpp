@@ -26,7 +26,6 @@ CommandLine tessellationBenchOptions() {
       {
           {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "quad,teapot-table,checker-sphere,kitchen"},
           {"size", "WxH", "frame size in pixels", "640x480"},
-      {"sizes", "LIST", "comma-separated frame sizes, each scene measured at each (instead of --size)", "--size"},
           {"frames", "N", "timed frames per setting, after a warm-up frame", "3"},
           {"time", "SECONDS", "scene time of the pose measured", "0"},
           {"csv", "FILE", "CSV output, one row per scene and setting", "tessellation.csv"},

@@ -25,6 +25,7 @@ test_packages=(
   chromium xvfb xauth   # tests: the browser client in headless Chromium, specula-view under Xvfb
   haproxy yamllint      # docker/lint-deploy.sh: the HAProxy front and the Kubernetes manifests
   python3               # tests: the documentation check (links and quoted commands)
+  clang-format          # tests: the code follows .clang-format
 )
 
 mode="${1:-}"

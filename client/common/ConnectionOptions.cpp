@@ -6,7 +6,8 @@ std::vector<OptionSpec> connectionOptions() {
   return {
       {"url", "URL", "server address; add ?token=SECRET when the server needs one", "ws://127.0.0.1:8080"},
       {"encoding", "proto|json", "WebSocket subprotocol: specula.v1.proto or specula.v1.json", "proto"},
-      {"reconnect-attempts", "N", "when the connection is lost: tries (backoff 0.2 s doubling to 5 s) to reconnect and resume; 0 gives up at once",
+      {"reconnect-attempts", "N",
+       "when the connection is lost: tries (backoff 0.2 s doubling to 5 s) to reconnect and resume; 0 gives up at once",
        std::to_string(ReconnectPolicy{}.maxAttempts)},
   };
 }

@@ -42,7 +42,8 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
   }
   ResumingClient& client = **connected;
   std::optional<OrbitCamera> start;  // the session's orbit at time 0, once the welcome names the scene
-  const auto inputInterval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.inputHz));
+  const auto inputInterval =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.inputHz));
   Clock::time_point nextInput = Clock::now();
   const Clock::time_point began = Clock::now();
   std::uint64_t sequence = 0;
@@ -59,13 +60,13 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
       }
       nextInput += inputInterval;
     }
-    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(
-        std::min(end, start ? nextInput : end) - Clock::now());
+    const auto wait =
+        std::chrono::duration_cast<std::chrono::milliseconds>(std::min(end, start ? nextInput : end) - Clock::now());
     auto message = client.receive(std::max(std::chrono::milliseconds(1), wait));
     if (!message) {
       if (client.closeInfo()) {
-        result.error = "server closed the session: " + std::to_string(client.closeInfo()->code) + " " +
-                       client.closeInfo()->reason;
+        result.error =
+            "server closed the session: " + std::to_string(client.closeInfo()->code) + " " + client.closeInfo()->reason;
         break;
       }
       continue;  // timed out: time for the next input
@@ -81,7 +82,9 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
     }
     if (!message->has_frame() || Clock::now() < measureFrom) continue;
     const Clock::time_point arrived = Clock::now();
-    if (lastFrame) result.longestGapMs = std::max(result.longestGapMs, std::chrono::duration<double, std::milli>(arrived - *lastFrame).count());
+    if (lastFrame)
+      result.longestGapMs =
+          std::max(result.longestGapMs, std::chrono::duration<double, std::milli>(arrived - *lastFrame).count());
     lastFrame = arrived;
     const v1::Frame& frame = message->frame();
     ++result.frames;
@@ -117,11 +120,14 @@ LoadReport runLoad(const LoadOptions& options) {
   std::atomic<std::uint64_t> framesSoFar{0};
   std::vector<std::thread> threads;
   for (int i = 0; i < options.sessions; ++i)
-    threads.emplace_back([&, i] { report.sessions[static_cast<std::size_t>(i)] = runSession(options, i, measureFrom, end, framesSoFar); });
+    threads.emplace_back([&, i] {
+      report.sessions[static_cast<std::size_t>(i)] = runSession(options, i, measureFrom, end, framesSoFar);
+    });
   while (Clock::now() < end) {
     std::this_thread::sleep_for(std::min<Clock::duration>(std::chrono::seconds(1), end - Clock::now()));
     if (options.progress)
-      options.progress(std::max(0.0, std::chrono::duration<double>(Clock::now() - measureFrom).count()), framesSoFar.load());
+      options.progress(std::max(0.0, std::chrono::duration<double>(Clock::now() - measureFrom).count()),
+                       framesSoFar.load());
   }
   for (std::thread& thread : threads) thread.join();
 
@@ -171,30 +177,29 @@ std::string loadReportJson(const LoadReport& report) {
                         {"longest_gap_ms", s.longestGapMs},
                         {"error", s.error}});
   const LoadOptions& o = report.options;
-  nlohmann::json out = {
-      {"options",
-       {{"host", o.address.host},
-        {"port", o.address.port},
-        {"encoding", o.encoding == protocol::Encoding::Proto ? "proto" : "json"},
-        {"sessions", o.sessions},
-        {"width", o.width},
-        {"height", o.height},
-        {"seconds", report.seconds},
-        {"input_hz", o.inputHz}}},
-      {"aggregate",
-       {{"frames", report.frames},
-        {"fps_per_session_mean", report.fpsMean},
-        {"fps_per_session_min", report.fpsMin},
-        {"latency_ms_p50", report.latencyP50},
-        {"latency_ms_p99", report.latencyP99},
-        {"latency_ms_max", report.latencyMax},
-        {"render_ms_mean", report.renderMsMean},
-        {"encode_ms_mean", report.encodeMsMean},
-        {"bytes_per_frame", report.bytesPerFrame},
-        {"bytes", report.bytes},
-        {"skipped_frames", report.skippedFrames},
-        {"errors", report.errors}}},
-      {"sessions", sessions}};
+  nlohmann::json out = {{"options",
+                         {{"host", o.address.host},
+                          {"port", o.address.port},
+                          {"encoding", o.encoding == protocol::Encoding::Proto ? "proto" : "json"},
+                          {"sessions", o.sessions},
+                          {"width", o.width},
+                          {"height", o.height},
+                          {"seconds", report.seconds},
+                          {"input_hz", o.inputHz}}},
+                        {"aggregate",
+                         {{"frames", report.frames},
+                          {"fps_per_session_mean", report.fpsMean},
+                          {"fps_per_session_min", report.fpsMin},
+                          {"latency_ms_p50", report.latencyP50},
+                          {"latency_ms_p99", report.latencyP99},
+                          {"latency_ms_max", report.latencyMax},
+                          {"render_ms_mean", report.renderMsMean},
+                          {"encode_ms_mean", report.encodeMsMean},
+                          {"bytes_per_frame", report.bytesPerFrame},
+                          {"bytes", report.bytes},
+                          {"skipped_frames", report.skippedFrames},
+                          {"errors", report.errors}}},
+                        {"sessions", sessions}};
   return out.dump(2);
 }
 

@@ -22,7 +22,7 @@ struct LoadOptions {
   std::chrono::milliseconds warmup{1000};    // first frames (sizes, caches) are not counted
   double inputHz = 60.0;                     // camera updates per second per session
   double orbitDegreesPerSecond = 30.0;
-  ReconnectPolicy reconnect;                 // a lost session reconnects and resumes (ResumingClient)
+  ReconnectPolicy reconnect;  // a lost session reconnects and resumes (ResumingClient)
   // Called about once a second from the calling thread with the seconds done and frames so far.
   std::function<void(double seconds, std::uint64_t frames)> progress;
 };
@@ -32,10 +32,10 @@ struct SessionLoad {
   double fps = 0.0;
   std::vector<double> latencyMs;  // one per measured frame
   double renderMsMean = 0.0, encodeMsMean = 0.0, serverMsMean = 0.0;
-  int reconnects = 0;          // connections lost and won back
-  int resumesRefused = 0;      // of those, the ones the server could not resume
-  double longestGapMs = 0.0;   // between two frames while measuring: what a lost connection cost
-  std::string error;  // empty when the session ran to the end
+  int reconnects = 0;         // connections lost and won back
+  int resumesRefused = 0;     // of those, the ones the server could not resume
+  double longestGapMs = 0.0;  // between two frames while measuring: what a lost connection cost
+  std::string error;          // empty when the session ran to the end
 };
 
 struct LoadReport {
@@ -43,7 +43,7 @@ struct LoadReport {
   std::vector<SessionLoad> sessions;
   double seconds = 0.0;  // measured
   std::uint64_t frames = 0, bytes = 0, skippedFrames = 0, errors = 0;
-  double fpsMean = 0.0, fpsMin = 0.0;  // per session
+  double fpsMean = 0.0, fpsMin = 0.0;                           // per session
   double latencyP50 = 0.0, latencyP99 = 0.0, latencyMax = 0.0;  // ms, all sessions together
   double renderMsMean = 0.0, encodeMsMean = 0.0, bytesPerFrame = 0.0;
 };

@@ -6,12 +6,15 @@
 namespace specula::client {
 
 bool reconnectable(int closeCode) {
-  return closeCode == 0 || closeCode == 1001 || closeCode == 1006 || closeCode == 1011 || closeCode == 1012 || closeCode == 1013;
+  return closeCode == 0 || closeCode == 1001 || closeCode == 1006 || closeCode == 1011 || closeCode == 1012 ||
+         closeCode == 1013;
 }
 
-Result<std::unique_ptr<ResumingClient>> ResumingClient::connect(const ServerAddress& address, protocol::Encoding encoding, v1::Hello hello,
+Result<std::unique_ptr<ResumingClient>> ResumingClient::connect(const ServerAddress& address,
+                                                                protocol::Encoding encoding, v1::Hello hello,
                                                                 ReconnectPolicy policy, Notice notice) {
-  std::unique_ptr<ResumingClient> client(new ResumingClient(address, encoding, std::move(hello), policy, std::move(notice)));
+  std::unique_ptr<ResumingClient> client(
+      new ResumingClient(address, encoding, std::move(hello), policy, std::move(notice)));
   if (Status opened = client->open(); !opened) return Error{opened.error()};
   return client;
 }
@@ -73,8 +76,9 @@ Result<v1::ServerMessage> ResumingClient::receive(std::chrono::milliseconds time
     if (message) {
       if (message->has_welcome()) {
         if (reconnects_ > 0 && notice_)
-          notice_(message->welcome().resumed() ? "resumed the session on a new connection (camera, animation and settings kept)"
-                                               : "reconnected, but as a fresh session (the server could not resume the old one)");
+          notice_(message->welcome().resumed()
+                      ? "resumed the session on a new connection (camera, animation and settings kept)"
+                      : "reconnected, but as a fresh session (the server could not resume the old one)");
         token_ = message->welcome().resume_token();
       }
       if (message->has_frame() && !message->frame().resume_token().empty()) token_ = message->frame().resume_token();
@@ -86,7 +90,8 @@ Result<v1::ServerMessage> ResumingClient::receive(std::chrono::milliseconds time
       final_ = closed;
       return Error{message.error()};
     }
-    const std::string why = closed->code == 0 ? closed->reason : "close " + std::to_string(closed->code) + " " + closed->reason;
+    const std::string why =
+        closed->code == 0 ? closed->reason : "close " + std::to_string(closed->code) + " " + closed->reason;
     if (Status back = reconnect(why); !back) return Error{back.error()};
   }
 }

@@ -15,8 +15,8 @@
 namespace specula::client {
 
 struct ReconnectPolicy {
-  int maxAttempts = 8;                          // tries per loss; then the loss is final
-  std::chrono::milliseconds firstDelay{200};    // before the first try; doubled each try
+  int maxAttempts = 8;                        // tries per loss; then the loss is final
+  std::chrono::milliseconds firstDelay{200};  // before the first try; doubled each try
   std::chrono::milliseconds maxDelay{5000};
   std::chrono::milliseconds connectTimeout{3000};  // one try: TCP, upgrade, welcome
 };
@@ -33,8 +33,9 @@ class ResumingClient {
   using Notice = std::function<void(const std::string&)>;
 
   // Connects and sends `hello`; the welcome arrives through receive() like any message.
-  static Result<std::unique_ptr<ResumingClient>> connect(const ServerAddress& address, protocol::Encoding encoding, v1::Hello hello,
-                                                         ReconnectPolicy policy = {}, Notice notice = {});
+  static Result<std::unique_ptr<ResumingClient>> connect(const ServerAddress& address, protocol::Encoding encoding,
+                                                         v1::Hello hello, ReconnectPolicy policy = {},
+                                                         Notice notice = {});
 
   // Sends on the current connection; a Resize also becomes the viewport of the next hello. A send
   // on a lost connection reconnects first.
@@ -50,9 +51,14 @@ class ResumingClient {
   int reconnects() const { return reconnects_; }  // successful ones
 
  private:
-  ResumingClient(ServerAddress address, protocol::Encoding encoding, v1::Hello hello, ReconnectPolicy policy, Notice notice)
-      : address_(std::move(address)), encoding_(encoding), hello_(std::move(hello)), policy_(policy), notice_(std::move(notice)) {}
-  Status open();  // one connection and its hello
+  ResumingClient(ServerAddress address, protocol::Encoding encoding, v1::Hello hello, ReconnectPolicy policy,
+                 Notice notice)
+      : address_(std::move(address)),
+        encoding_(encoding),
+        hello_(std::move(hello)),
+        policy_(policy),
+        notice_(std::move(notice)) {}
+  Status open();                             // one connection and its hello
   Status reconnect(const std::string& why);  // tries until one connection works or the attempts are used up
 
   ServerAddress address_;

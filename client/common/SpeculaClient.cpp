@@ -70,7 +70,8 @@ struct SpeculaClient::State {
   }
   void noteClosed(const beast::error_code& error) {
     if (closed) return;
-    if (error == websocket::error::closed) closed = CloseInfo{ws.reason().code, std::string(ws.reason().reason.c_str())};
+    if (error == websocket::error::closed)
+      closed = CloseInfo{ws.reason().code, std::string(ws.reason().reason.c_str())};
     else closed = CloseInfo{0, error.message()};
   }
 };
@@ -124,7 +125,8 @@ Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddres
 }
 
 Status SpeculaClient::send(const v1::ClientMessage& message) {
-  return sendRaw(protocol::encodeClientMessage(message, state_->encoding), state_->encoding == protocol::Encoding::Json);
+  return sendRaw(protocol::encodeClientMessage(message, state_->encoding),
+                 state_->encoding == protocol::Encoding::Json);
 }
 
 Status SpeculaClient::sendRaw(const std::string& payload, bool text) {
@@ -163,8 +165,8 @@ Result<v1::ServerMessage> SpeculaClient::receive(std::chrono::milliseconds timeo
     return Error{"the server closed the connection: " + std::to_string(s.closed->code) + " " + s.closed->reason};
   }
   const auto data = s.buffer.cdata();
-  auto message = protocol::decodeServerMessage(
-      std::string_view(static_cast<const char*>(data.data()), data.size()), s.encoding);
+  auto message =
+      protocol::decodeServerMessage(std::string_view(static_cast<const char*>(data.data()), data.size()), s.encoding);
   s.buffer.consume(s.buffer.size());
   return message;
 }

@@ -16,9 +16,11 @@ Status checkKeys(const std::vector<PathKey>& keys, const std::string& where) {
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const PathKey& k = keys[i];
     const std::string key = where + ": key " + std::to_string(i + 1);
-    for (float v : {k.eye.x, k.eye.y, k.eye.z, k.target.x, k.target.y, k.target.z, k.up.x, k.up.y, k.up.z, k.fovDegrees})
+    for (float v :
+         {k.eye.x, k.eye.y, k.eye.z, k.target.x, k.target.y, k.target.z, k.up.x, k.up.y, k.up.z, k.fovDegrees})
       if (!std::isfinite(v)) return Error{key + " has a non-finite number"};
-    if (!std::isfinite(k.time) || (k.sceneTime && !std::isfinite(*k.sceneTime))) return Error{key + " has a non-finite time"};
+    if (!std::isfinite(k.time) || (k.sceneTime && !std::isfinite(*k.sceneTime)))
+      return Error{key + " has a non-finite time"};
     if (i > 0 && k.time <= keys[i - 1].time) return Error{key + ": times must increase strictly"};
     if (glm::length(k.eye - k.target) < 1e-6f) return Error{key + ": eye and target coincide"};
     if (!(k.fovDegrees > 0.0f && k.fovDegrees < 180.0f)) return Error{key + ": fov must be in (0, 180) degrees"};
@@ -65,9 +67,11 @@ Result<CameraPath> parseCameraPathJson(const std::string& text) {
       return {};
     };
     PathKey k;
-    if (!item.is_object() || !item.contains("time") || !item["time"].is_number()) return Error{key + " needs a numeric \"time\""};
+    if (!item.is_object() || !item.contains("time") || !item["time"].is_number())
+      return Error{key + " needs a numeric \"time\""};
     k.time = item["time"].get<double>();
-    for (auto [name, field, required] : {std::tuple{"eye", &k.eye, true}, {"target", &k.target, true}, {"up", &k.up, false}})
+    for (auto [name, field, required] :
+         {std::tuple{"eye", &k.eye, true}, {"target", &k.target, true}, {"up", &k.up, false}})
       if (Status status = vector(name, *field, required); !status) return Error{status.error()};
     if (item.contains("fov")) {
       if (!item["fov"].is_number()) return Error{key + ": \"fov\" must be a number"};
@@ -115,7 +119,8 @@ Result<CameraPath> parseCameraPathCsv(const std::string& text) {
       auto found = column.find(name);
       return found != column.end() && found->second < cells.size() ? cells[found->second] : fallback;
     };
-    if (cells.size() < column.size()) return Error{"line " + std::to_string(lineNumber) + " has fewer cells than the header"};
+    if (cells.size() < column.size())
+      return Error{"line " + std::to_string(lineNumber) + " has fewer cells than the header"};
     PathKey k;
     k.time = get("time", 0.0);
     k.eye = glm::vec3(get("eye_x", 0), get("eye_y", 0), get("eye_z", 0));

@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
   if (!inputHz || *inputHz <= 0.0 || *inputHz > 1000.0) return fail("--input-hz expects a number in (0, 1000]");
 
   // Fail fast and clearly when nobody is there, before starting N threads.
-  if (auto probe = client::SpeculaClient::connect(connection->address, connection->encoding); !probe) return fail(probe.error());
+  if (auto probe = client::SpeculaClient::connect(connection->address, connection->encoding); !probe)
+    return fail(probe.error());
 
   client::LoadOptions load;
   load.address = connection->address;
@@ -71,19 +72,23 @@ int main(int argc, char** argv) {
 
   std::printf("%d sessions, %dx%d, %s, %.0f s measured (after %.0f s warm-up)\n", *sessions, load.width, load.height,
               options.text("encoding").c_str(), *seconds, *warmup);
-  std::printf("session   fps  latency p50  p99 ms  render ms  encode ms  KB/frame  skipped  reconnects  longest gap ms  error\n");
+  std::printf(
+      "session   fps  latency p50  p99 ms  render ms  encode ms  KB/frame  skipped  reconnects  longest gap ms  "
+      "error\n");
   for (std::size_t i = 0; i < report.sessions.size(); ++i) {
     const client::SessionLoad& s = report.sessions[i];
     std::printf("%7zu  %5.1f  %11.1f  %6.1f  %9.1f  %9.2f  %8.1f  %7llu  %10d  %14.0f  %s\n", i + 1, s.fps,
                 nearestRankPercentile(s.latencyMs, 0.5), nearestRankPercentile(s.latencyMs, 0.99), s.renderMsMean,
                 s.encodeMsMean, s.frames ? static_cast<double>(s.bytes) / static_cast<double>(s.frames) / 1024.0 : 0.0,
-                static_cast<unsigned long long>(s.skippedFrames), s.reconnects, s.longestGapMs, s.error.empty() ? "-" : s.error.c_str());
+                static_cast<unsigned long long>(s.skippedFrames), s.reconnects, s.longestGapMs,
+                s.error.empty() ? "-" : s.error.c_str());
   }
-  std::printf("all      fps/session %.1f (min %.1f), latency p50 %.1f ms, p99 %.1f ms, max %.1f ms; %llu frames, "
-              "%.1f KB/frame, %llu skipped, %llu errors\n",
-              report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99, report.latencyMax,
-              static_cast<unsigned long long>(report.frames), report.bytesPerFrame / 1024.0,
-              static_cast<unsigned long long>(report.skippedFrames), static_cast<unsigned long long>(report.errors));
+  std::printf(
+      "all      fps/session %.1f (min %.1f), latency p50 %.1f ms, p99 %.1f ms, max %.1f ms; %llu frames, "
+      "%.1f KB/frame, %llu skipped, %llu errors\n",
+      report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99, report.latencyMax,
+      static_cast<unsigned long long>(report.frames), report.bytesPerFrame / 1024.0,
+      static_cast<unsigned long long>(report.skippedFrames), static_cast<unsigned long long>(report.errors));
   if (options.has("json")) {
     const std::string json = client::loadReportJson(report) + "\n";
     if (options.text("json") == "-") {

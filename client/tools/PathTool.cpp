@@ -23,7 +23,8 @@ constexpr CommandFailure fail{"specula-path"};
 
 v1::ClientMessage cameraMessage(const client::PathKey& key, std::uint64_t sequence) {
   v1::ClientMessage message;
-  v1::CameraUpdate& camera = *message.mutable_camera() = protocol::cameraUpdate(key.eye, key.target, key.up, key.fovDegrees);
+  v1::CameraUpdate& camera = *message.mutable_camera() =
+      protocol::cameraUpdate(key.eye, key.target, key.up, key.fovDegrees);
   camera.set_sequence(sequence);
   camera.set_client_time_ms(client::steadyMilliseconds());
   return message;
@@ -46,15 +47,16 @@ std::string csvRow(std::size_t sample, double pathTime, const v1::Frame& frame, 
                 static_cast<unsigned long long>(frame.number()), latencyMs, frame.render_ms(), frame.encode_ms(),
                 frame.server_ms(), frame.jpeg().size(), frame.still() ? 1 : 0, frame.width(), frame.height(),
                 frame.scene_time_ms(), frame.search().mirrors(), frame.search().searched(), frame.search().mean_steps(),
-                frame.search().unsolved(), frame.tessellation().input_triangles(), frame.tessellation().finished_triangles(),
-                frame.tessellation().midpoint_searches(), stages.c_str());
+                frame.search().unsolved(), frame.tessellation().input_triangles(),
+                frame.tessellation().finished_triangles(), frame.tessellation().midpoint_searches(), stages.c_str());
   return row;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<OptionSpec> specs = {{"path", "FILE", "camera path, .json or .csv (see client/tools/CameraPath.h for the format)", ""}};
+  std::vector<OptionSpec> specs = {
+      {"path", "FILE", "camera path, .json or .csv (see client/tools/CameraPath.h for the format)", ""}};
   for (OptionSpec& spec : client::connectionOptions()) specs.push_back(std::move(spec));
   for (OptionSpec spec : std::initializer_list<OptionSpec>{
            {"pace", "frames|realtime", "wait for each sample's frame, or follow the path's clock", "frames"},
@@ -104,8 +106,9 @@ int main(int argc, char** argv) {
   hello.set_width(static_cast<std::uint32_t>(size->first));
   hello.set_height(static_cast<std::uint32_t>(size->second));
   // A lost connection is retried and the session resumed; the user is told on stderr.
-  auto connected = client::ResumingClient::connect(connection->address, connection->encoding, hello, connection->reconnect,
-                                                   [](const std::string& notice) { std::fprintf(stderr, "\nspecula-path: %s\n", notice.c_str()); });
+  auto connected = client::ResumingClient::connect(
+      connection->address, connection->encoding, hello, connection->reconnect,
+      [](const std::string& notice) { std::fprintf(stderr, "\nspecula-path: %s\n", notice.c_str()); });
   if (!connected) return fail(connected.error());
   client::ResumingClient& client = **connected;
   const bool seeks = path->keys.front().sceneTime.has_value();
@@ -121,12 +124,15 @@ int main(int argc, char** argv) {
   auto receiveOne = [&](std::chrono::milliseconds wait) -> std::optional<v1::ServerMessage> {
     auto message = client.receive(wait);
     if (!message) {
-      if (client.closeInfo()) problem = "the server closed the connection: " + std::to_string(client.closeInfo()->code) + " " + client.closeInfo()->reason;
+      if (client.closeInfo())
+        problem = "the server closed the connection: " + std::to_string(client.closeInfo()->code) + " " +
+                  client.closeInfo()->reason;
       else if (message.error().find("timed out") == std::string::npos) problem = message.error();
       return std::nullopt;
     }
     if (message->has_error() && message->error().code() == v1::Error::RESUME_REFUSED) {
-      std::fprintf(stderr, "\nspecula-path: %s\n", message->error().message().c_str());  // the path sets camera and time anyway
+      std::fprintf(stderr, "\nspecula-path: %s\n",
+                   message->error().message().c_str());  // the path sets camera and time anyway
     } else if (message->has_error()) {
       problem = "server error " + v1::Error::Code_Name(message->error().code()) + ": " + message->error().message();
       return std::nullopt;
@@ -167,9 +173,11 @@ int main(int argc, char** argv) {
     currentPathTime = path->keys.front().time + static_cast<double>(sample) / *fps;
     const client::PathKey key = path->at(currentPathTime);
     if (pace == "realtime") {  // keep reading until this sample is due
-      const auto due = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(currentPathTime - path->keys.front().time));
+      const auto due = start + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(currentPathTime - path->keys.front().time));
       while (problem.empty() && Clock::now() < due)
-        receiveOne(std::max(std::chrono::milliseconds(1), std::chrono::duration_cast<std::chrono::milliseconds>(due - Clock::now())));
+        receiveOne(std::max(std::chrono::milliseconds(1),
+                            std::chrono::duration_cast<std::chrono::milliseconds>(due - Clock::now())));
     }
     if (key.sceneTime) (void)client.send(animationMessage(v1::AnimationControl::SEEK, *key.sceneTime * 1000.0));
     sentAt[++sequence] = client::steadyMilliseconds();
@@ -188,10 +196,11 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "\n");
   client.close();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  std::printf("%zu samples, %zu frames in %.2f s (%.1f fps); latency p50 %.1f ms, p99 %.1f ms; %.1f KB/frame; wrote %s\n",
-              samples, frames, seconds, static_cast<double>(frames) / seconds, nearestRankPercentile(latencies, 0.5),
-              nearestRankPercentile(latencies, 0.99), frames ? static_cast<double>(bytes) / static_cast<double>(frames) / 1024.0 : 0.0,
-              options.text("csv").c_str());
+  std::printf(
+      "%zu samples, %zu frames in %.2f s (%.1f fps); latency p50 %.1f ms, p99 %.1f ms; %.1f KB/frame; wrote %s\n",
+      samples, frames, seconds, static_cast<double>(frames) / seconds, nearestRankPercentile(latencies, 0.5),
+      nearestRankPercentile(latencies, 0.99),
+      frames ? static_cast<double>(bytes) / static_cast<double>(frames) / 1024.0 : 0.0, options.text("csv").c_str());
   if (!problem.empty()) return fail(problem);
   return 0;
 }

@@ -65,8 +65,8 @@ void CameraInput::onCursorPos(GLFWwindow* window, double x, double y) {
   int width = 0, height = 0;
   glfwGetWindowSize(window, &width, &height);
   client::OrbitCamera& camera = *input.camera_;
-  const float perPixel = 2.0f * camera.radius * std::tan(glm::radians(camera.fovDegrees) / 2.0f) /
-                         static_cast<float>(std::max(1, height));
+  const float perPixel =
+      2.0f * camera.radius * std::tan(glm::radians(camera.fovDegrees) / 2.0f) / static_cast<float>(std::max(1, height));
   if (input.panning_) camera.pan(-dx * perPixel, dy * perPixel);
   else camera.orbit(-dx * 0.008f, dy * 0.008f);
   input.moveCamera();

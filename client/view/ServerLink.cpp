@@ -41,8 +41,7 @@ void runNetwork(client::ResumingClient& client, Link& link) {
     }
     if (message->has_error() && message->error().code() == v1::Error::RESUME_REFUSED)
       std::printf("specula-view: %s\n", message->error().message().c_str());
-    else if (message->has_error())
-      link.problem = "server: " + message->error().message();
+    else if (message->has_error()) link.problem = "server: " + message->error().message();
     if (message->has_frame()) {
       link.latestFrame = std::move(*message->mutable_frame());
       ++link.framesReceived;

@@ -11,9 +11,9 @@ namespace specula::view {
 
 struct ViewerOptions {
   client::Connection connection;
-  std::pair<int, int> size;  // of the window, in screen coordinates
-  int frameLimit = 0;        // exit after drawing this many frames; 0: never
-  double seconds = 0.0;      // exit after this long; 0: never
+  std::pair<int, int> size;               // of the window, in screen coordinates
+  int frameLimit = 0;                     // exit after drawing this many frames; 0: never
+  double seconds = 0.0;                   // exit after this long; 0: never
   std::optional<std::string> screenshot;  // PNG file that gets the window's last picture on exit
 };
 

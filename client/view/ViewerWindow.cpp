@@ -26,8 +26,7 @@ Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(std::pair<int, int> siz
   glfwSwapInterval(1);
   auto genFramebuffers = reinterpret_cast<GenFramebuffers>(glfwGetProcAddress("glGenFramebuffers"));
   window->bindFramebuffer_ = reinterpret_cast<BindFramebuffer>(glfwGetProcAddress("glBindFramebuffer"));
-  window->framebufferTexture2D_ =
-      reinterpret_cast<FramebufferTexture2D>(glfwGetProcAddress("glFramebufferTexture2D"));
+  window->framebufferTexture2D_ = reinterpret_cast<FramebufferTexture2D>(glfwGetProcAddress("glFramebufferTexture2D"));
   window->blitFramebuffer_ = reinterpret_cast<BlitFramebuffer>(glfwGetProcAddress("glBlitFramebuffer"));
   if (!genFramebuffers || !window->bindFramebuffer_ || !window->framebufferTexture2D_ || !window->blitFramebuffer_)
     return Error{"this OpenGL lacks framebuffer blits (OpenGL 3.0 is needed)"};

@@ -57,7 +57,8 @@ int runAccuracyBench(std::span<const std::string> arguments) {
   auto seconds = options.number("seconds");
   if (!size) return fail(size.error());
   if (!poses) return fail(poses.error());
-  if (!orbit || *orbit < 0.0 || *orbit > 180.0) return fail("--orbit expects degrees from 0 to 180, got '" + options.text("orbit") + "'");
+  if (!orbit || *orbit < 0.0 || *orbit > 180.0)
+    return fail("--orbit expects degrees from 0 to 180, got '" + options.text("orbit") + "'");
   if (!seconds || *seconds < 0.0 || *seconds > 3600.0)
     return fail("--seconds expects scene seconds from 0 to 3600, got '" + options.text("seconds") + "'");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
@@ -66,7 +67,8 @@ int runAccuracyBench(std::span<const std::string> arguments) {
   settings.orbitDegrees = *orbit;
   settings.seconds = *seconds;
   const bool plot = !options.has("no-plot");
-  if (plot && !gnuplotAvailable()) return fail(std::string("the plot needs gnuplot: ") + kInstallGnuplot + ", or pass --no-plot");
+  if (plot && !gnuplotAvailable())
+    return fail(std::string("the plot needs gnuplot: ") + kInstallGnuplot + ", or pass --no-plot");
 
   // Outputs and scene first, so a typo fails before the long part.
   const std::filesystem::path folder = options.text("out");
@@ -83,7 +85,8 @@ int runAccuracyBench(std::span<const std::string> arguments) {
 
   const std::vector<bench::AccuracySetting> sweep = bench::accuracySweep(**scene);
   // Each setting, and a ray-traced reference per pose for the scene and for every re-meshed mirror.
-  const auto remeshed = static_cast<std::size_t>(std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.mirrorMesh.has_value(); }));
+  const auto remeshed = static_cast<std::size_t>(
+      std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.mirrorMesh.has_value(); }));
   const std::size_t steps = sweep.size() + (1 + remeshed) * static_cast<std::size_t>(settings.poses);
   std::size_t step = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -94,14 +97,16 @@ int runAccuracyBench(std::span<const std::string> arguments) {
   if (!rows) return fail((*scene)->name + ": " + rows.error());
 
   char title[512];
-  std::snprintf(title, sizeof title, "%s at %dx%d: %d poses, %.0f deg orbit, %s", (*scene)->name.c_str(), settings.width,
-                settings.height, settings.poses, settings.orbitDegrees, (*context)->info().renderer.c_str());
+  std::snprintf(title, sizeof title, "%s at %dx%d: %d poses, %.0f deg orbit, %s", (*scene)->name.c_str(),
+                settings.width, settings.height, settings.poses, settings.orbitDegrees,
+                (*context)->info().renderer.c_str());
   const std::string markdown = bench::formatAccuracyMarkdown(*rows, std::string("### ") + title);
   std::fputs(markdown.c_str(), stdout);
-  for (const auto& [extension, text] : {std::pair{"csv", bench::formatAccuracyCsv(*rows)},
-                                        {"json", bench::formatAccuracyJson(*rows)},
-                                        {"md", markdown},
-                                        {"gp", bench::accuracyPlotScript(*rows, title, "accuracy.png", "accuracy.svg")}}) {
+  for (const auto& [extension, text] :
+       {std::pair{"csv", bench::formatAccuracyCsv(*rows)},
+        {"json", bench::formatAccuracyJson(*rows)},
+        {"md", markdown},
+        {"gp", bench::accuracyPlotScript(*rows, title, "accuracy.png", "accuracy.svg")}}) {
     if (Status status = writeFile(output(extension), text); !status) return fail(status.error());
     std::printf("wrote %s\n", output(extension).c_str());
   }

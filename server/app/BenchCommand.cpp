@@ -6,13 +6,14 @@
 namespace specula::app {
 
 int runBench(std::span<const std::string> arguments) {
-  return runSubcommand("specula bench", "Measures Specula: the scene bench, or one of these.",
-                       {
-                           {"tessellation", "tessellation settings against the exact reflection", runTessellationBench},
-                           {"accuracy", "every method and setting against the ray tracer: error against time", runAccuracyBench},
-                           {"serve", "streaming: sessions x sizes against real `specula serve` processes", runServeBench},
-                       },
-                       arguments, runSceneBench);
+  return runSubcommand(
+      "specula bench", "Measures Specula: the scene bench, or one of these.",
+      {
+          {"tessellation", "tessellation settings against the exact reflection", runTessellationBench},
+          {"accuracy", "every method and setting against the ray tracer: error against time", runAccuracyBench},
+          {"serve", "streaming: sessions x sizes against real `specula serve` processes", runServeBench},
+      },
+      arguments, runSceneBench);
 }
 
 }  // namespace specula::app

@@ -17,10 +17,11 @@ namespace {
 constexpr std::size_t kKeptOutputBytes = 256 * 1024;
 }  // namespace
 
-Result<std::unique_ptr<ChildProcess>> ChildProcess::start(std::vector<std::string> arguments,
-                                                          std::vector<std::pair<std::string, std::string>> environment) {
+Result<std::unique_ptr<ChildProcess>> ChildProcess::start(
+    std::vector<std::string> arguments, std::vector<std::pair<std::string, std::string>> environment) {
   if (arguments.empty()) return Error{"no program to start"};
-  // Everything exec needs is built before fork: after it, in a threaded parent, only async-signal-safe calls are allowed.
+  // Everything exec needs is built before fork: after it, in a threaded parent, only async-signal-safe calls are
+  // allowed.
   std::vector<char*> argv;
   for (std::string& argument : arguments) argv.push_back(argument.data());
   argv.push_back(nullptr);
@@ -40,7 +41,7 @@ Result<std::unique_ptr<ChildProcess>> ChildProcess::start(std::vector<std::strin
   }
   if (pid == 0) {
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // a harness that crashes takes its instances and HAProxy with it
-    sigset_t none;  // the child starts with no signal blocked, whatever the parent's threads block
+    sigset_t none;                     // the child starts with no signal blocked, whatever the parent's threads block
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, nullptr);
     dup2(fds[1], STDOUT_FILENO);
@@ -98,7 +99,8 @@ void ChildProcess::signal(int number) const {
   if (!status_) ::kill(pid_, number);
 }
 
-std::optional<std::vector<std::string>> ChildProcess::waitFor(const std::regex& pattern, std::chrono::milliseconds timeout) {
+std::optional<std::vector<std::string>> ChildProcess::waitFor(const std::regex& pattern,
+                                                              std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (true) {
     {

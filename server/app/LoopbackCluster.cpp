@@ -48,7 +48,8 @@ std::optional<std::string> findProgram(const std::string& program) {
 
 }  // namespace
 
-Result<std::pair<int, std::string>> httpGet(std::uint16_t port, const std::string& path, std::chrono::milliseconds timeout) {
+Result<std::pair<int, std::string>> httpGet(std::uint16_t port, const std::string& path,
+                                            std::chrono::milliseconds timeout) {
   asio::io_context io;
   beast::tcp_stream stream(io);
   stream.expires_after(timeout);
@@ -57,13 +58,15 @@ Result<std::pair<int, std::string>> httpGet(std::uint16_t port, const std::strin
   beast::http::response<beast::http::string_body> response;
   beast::flat_buffer buffer;
   beast::error_code failure;
-  stream.async_connect(asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), port), [&](beast::error_code error) {
-    if (error) return void(failure = error);
-    beast::http::async_write(stream, request, [&](beast::error_code written, std::size_t) {
-      if (written) return void(failure = written);
-      beast::http::async_read(stream, buffer, response, [&](beast::error_code read, std::size_t) { failure = read; });
-    });
-  });
+  stream.async_connect(asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), port),
+                       [&](beast::error_code error) {
+                         if (error) return void(failure = error);
+                         beast::http::async_write(stream, request, [&](beast::error_code written, std::size_t) {
+                           if (written) return void(failure = written);
+                           beast::http::async_read(stream, buffer, response,
+                                                   [&](beast::error_code read, std::size_t) { failure = read; });
+                         });
+                       });
   io.run();
   if (failure) return Error{"GET http://127.0.0.1:" + std::to_string(port) + path + ": " + failure.message()};
   return std::pair{static_cast<int>(response.result_int()), response.body()};
@@ -71,20 +74,31 @@ Result<std::pair<int, std::string>> httpGet(std::uint16_t port, const std::strin
 
 Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackClusterOptions& options) {
   const std::optional<std::string> haproxy = findProgram(options.haproxy);
-  if (!haproxy) return Error{"'" + options.haproxy + "' is not installed: apt-get install haproxy (docker/install-deps.sh installs it)"};
+  if (!haproxy)
+    return Error{"'" + options.haproxy +
+                 "' is not installed: apt-get install haproxy (docker/install-deps.sh installs it)"};
   if (!fs::exists(options.haproxyConfig))
-    return Error{"HAProxy's configuration " + options.haproxyConfig.string() + " is missing; run from the repository root or name it"};
+    return Error{"HAProxy's configuration " + options.haproxyConfig.string() +
+                 " is missing; run from the repository root or name it"};
   std::unique_ptr<LoopbackCluster> cluster(new LoopbackCluster());
   std::string folder = (fs::temp_directory_path() / "specula-cluster-XXXXXX").string();
-  if (!mkdtemp(folder.data())) return Error{"cannot create a folder for the cluster's files under " + fs::temp_directory_path().string()};
+  if (!mkdtemp(folder.data()))
+    return Error{"cannot create a folder for the cluster's files under " + fs::temp_directory_path().string()};
   cluster->folder_ = folder;
   const fs::path secret = cluster->folder_ / "resume.secret";
   std::ofstream(secret) << options.resumeSecret;
   fs::permissions(secret, fs::perms::owner_read | fs::perms::owner_write);
 
   for (int i = 0; i < options.instances; ++i) {
-    std::vector<std::string> arguments = {options.specula, "serve", "--port", "0", "--public-metrics", "--resume-secret-file", secret.string(),
-                                          "--drain-seconds", std::to_string(options.drainSeconds)};
+    std::vector<std::string> arguments = {options.specula,
+                                          "serve",
+                                          "--port",
+                                          "0",
+                                          "--public-metrics",
+                                          "--resume-secret-file",
+                                          secret.string(),
+                                          "--drain-seconds",
+                                          std::to_string(options.drainSeconds)};
     arguments.insert(arguments.end(), options.serveArguments.begin(), options.serveArguments.end());
     auto process = ChildProcess::start(std::move(arguments));
     if (!process) return Error{"instance " + std::to_string(i) + ": " + process.error()};
@@ -92,7 +106,8 @@ Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackCl
   }
   for (std::size_t i = 0; i < cluster->instances_.size(); ++i) {  // they start their GL side by side
     Instance& instance = cluster->instances_[i];
-    const auto listening = instance.process->waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), options.startTimeout);
+    const auto listening =
+        instance.process->waitFor(std::regex("listening on 127\\.0\\.0\\.1:(\\d+)"), options.startTimeout);
     if (!listening) return Error{"instance " + std::to_string(i) + " did not start:\n" + instance.process->output()};
     instance.port = static_cast<std::uint16_t>(std::stoi((*listening)[1]));
   }
@@ -105,9 +120,10 @@ Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackCl
   auto front = freePort();
   if (!front) return Error{front.error()};
   cluster->frontPort_ = *front;
-  auto process = ChildProcess::start({*haproxy, "-db", "-f", options.haproxyConfig.string(), "-f", backendFile.string()},
-                                     {{"SPECULA_FRONT_BIND", "127.0.0.1:" + std::to_string(*front)},
-                                      {"SPECULA_HAPROXY_SOCKET", (cluster->folder_ / "admin.sock").string()}});
+  auto process =
+      ChildProcess::start({*haproxy, "-db", "-f", options.haproxyConfig.string(), "-f", backendFile.string()},
+                          {{"SPECULA_FRONT_BIND", "127.0.0.1:" + std::to_string(*front)},
+                           {"SPECULA_HAPROXY_SOCKET", (cluster->folder_ / "admin.sock").string()}});
   if (!process) return Error{"HAProxy: " + process.error()};
   cluster->haproxy_ = std::move(*process);
   if (Status up = cluster->waitForUp(cluster->instances_.size(), 15s); !up)

@@ -20,9 +20,9 @@ struct LoopbackClusterOptions {
   std::string specula;                      // the `specula` executable
   std::vector<std::string> serveArguments;  // added to each `serve` (scene, limits, GL)
   int instances = 3;
-  std::string resumeSecret;                 // >= 32 bytes; written to a file every instance reads
+  std::string resumeSecret;  // >= 32 bytes; written to a file every instance reads
   int drainSeconds = 2;
-  std::string haproxy = "haproxy";          // found on PATH unless a path is given
+  std::string haproxy = "haproxy";  // found on PATH unless a path is given
   std::filesystem::path haproxyConfig = "docker/haproxy/specula.cfg";
   std::chrono::milliseconds startTimeout{std::chrono::seconds(120)};  // an instance's GL start on a cold machine
 };

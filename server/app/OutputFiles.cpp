@@ -5,7 +5,9 @@
 namespace specula::app {
 
 namespace {
-std::string unwritable(const std::string& path) { return "could not write '" + path + "': check the folder exists and is writable"; }
+std::string unwritable(const std::string& path) {
+  return "could not write '" + path + "': check the folder exists and is writable";
+}
 }  // namespace
 
 Status checkWritable(const std::string& path) {

@@ -30,7 +30,8 @@ Status runGnuplot(const std::string& folder, const std::string& scriptFile) {
   while (waitpid(child, &status, 0) < 0)
     if (errno != EINTR) return Error{std::string("waiting for gnuplot: ") + std::strerror(errno)};
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 127) return Error{std::string("gnuplot was not found: ") + kInstallGnuplot};
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+    return Error{std::string("gnuplot was not found: ") + kInstallGnuplot};
   if (WIFEXITED(status) && WEXITSTATUS(status) == 126) return Error{"could not enter '" + folder + "' to run gnuplot"};
   return Error{"gnuplot failed on " + folder + "/" + scriptFile + " (exit status " +
                std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status)) + ")"};

@@ -7,7 +7,8 @@
 namespace specula::app {
 
 // The fix to print when gnuplot is missing.
-inline constexpr const char* kInstallGnuplot = "install gnuplot with `apt-get install gnuplot-nox` (docker/install-deps.sh does)";
+inline constexpr const char* kInstallGnuplot =
+    "install gnuplot with `apt-get install gnuplot-nox` (docker/install-deps.sh does)";
 
 bool gnuplotAvailable();
 

@@ -14,7 +14,8 @@ constexpr SettingGroups kCommandGroups = {passes::kGBufferGroup, passes::kSearch
 
 template <class Settings>
 Status parseGroups(const CommandLine& options, SettingGroups groups, Settings& settings) {
-  if (Status status = parseSettingOptions(options, passes::reflectionSettingsSchema(), groups, settings); !status) return status;
+  if (Status status = parseSettingOptions(options, passes::reflectionSettingsSchema(), groups, settings); !status)
+    return status;
   applyImpliedOptions(options, settings);
   return {};
 }
@@ -37,7 +38,8 @@ OptionSpec settingOption(const SettingInfo& setting, double defaultValue, std::s
     help += ", in " + settingRange(setting);
   }
   help += helpSuffix;
-  return {setting.name, valueName, help, setting.defaultText.empty() ? settingText(setting, defaultValue) : setting.defaultText};
+  return {setting.name, valueName, help,
+          setting.defaultText.empty() ? settingText(setting, defaultValue) : setting.defaultText};
 }
 
 Result<std::optional<double>> givenSetting(const CommandLine& options, const SettingInfo& setting) {
@@ -75,7 +77,8 @@ std::vector<OptionSpec> tessellationOptions() {
 
 Result<passes::TessellationSettings> parseTessellationOptions(const CommandLine& options) {
   passes::ReflectionSettings settings;
-  if (Status status = parseGroups(options, {passes::kTessellationGroup}, settings); !status) return Error{status.error()};
+  if (Status status = parseGroups(options, {passes::kTessellationGroup}, settings); !status)
+    return Error{status.error()};
   return settings.tessellation;
 }
 
@@ -95,7 +98,9 @@ Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& 
   return parseGroups(options, {passes::kPlanGroup}, settings);
 }
 
-OptionSpec samplesOption(int fallback, const std::string& what) { return {"samples", "N", what, std::to_string(fallback)}; }
+OptionSpec samplesOption(int fallback, const std::string& what) {
+  return {"samples", "N", what, std::to_string(fallback)};
+}
 
 Result<int> parseSamples(const CommandLine& options, const std::string& name) {
   auto samples = options.integer(name, 1, 16);

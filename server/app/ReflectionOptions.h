@@ -29,14 +29,15 @@ std::vector<OptionSpec> settingOptions(const std::vector<Setting<Target>>& schem
                                        SettingGroups groups = {}, std::string_view helpSuffix = "") {
   std::vector<OptionSpec> specs;
   for (const Setting<Target>& setting : schema)
-    if (inGroups(setting.info, groups)) specs.push_back(settingOption(setting.info, setting.read(defaults), helpSuffix));
+    if (inGroups(setting.info, groups))
+      specs.push_back(settingOption(setting.info, setting.read(defaults), helpSuffix));
   return specs;
 }
 
 // Writes the settings in `groups` that the arguments name into `target`; the rest keep their values.
 template <class Target>
-Status parseSettingOptions(const CommandLine& options, const std::vector<Setting<Target>>& schema,
-                           SettingGroups groups, Target& target) {
+Status parseSettingOptions(const CommandLine& options, const std::vector<Setting<Target>>& schema, SettingGroups groups,
+                           Target& target) {
   for (const Setting<Target>& setting : schema) {
     if (!inGroups(setting.info, groups)) continue;
     auto value = givenSetting(options, setting.info);
@@ -64,7 +65,9 @@ Status parsePlanOptions(const CommandLine& options, passes::ReflectionSettings& 
 void applyImpliedOptions(const CommandLine& options, passes::ReflectionSettings& settings);
 
 // --samples N: anti-aliasing, rays or jittered frames per pixel (math::samplePattern), `fallback` by default.
-OptionSpec samplesOption(int fallback, const std::string& what = "anti-aliasing: samples per pixel, 1, 2, 4, 8 or 16 (every method takes the same points)");
+OptionSpec samplesOption(int fallback,
+                         const std::string& what =
+                             "anti-aliasing: samples per pixel, 1, 2, 4, 8 or 16 (every method takes the same points)");
 Result<int> parseSamples(const CommandLine& options, const std::string& name = "samples");
 
 }  // namespace specula::app

@@ -28,14 +28,16 @@ constexpr int kJpegQuality = 92;
 
 CommandLine renderOptions() {
   std::vector<OptionSpec> specs = {
-      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file", "checker-sphere"},
+      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file",
+       "checker-sphere"},
       {"size", "WxH", "frame size in pixels", "640x480"},
       {"eye", "x,y,z", "camera position, world metres", ""},
       {"target", "x,y,z", "point the camera looks at", ""},
       {"up", "x,y,z", "camera up direction", ""},
       {"fov", "DEG", "vertical field of view in degrees", ""},
       {"time", "SECONDS", "scene time: animations are evaluated at this instant", "0"},
-      {"method", "METHOD", "search | explosion-map (= search with --search explosion-map) | environment-map | raytrace | none", "search"},
+      {"method", "METHOD",
+       "search | explosion-map (= search with --search explosion-map) | environment-map | raytrace | none", "search"},
   };
   for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
@@ -120,20 +122,24 @@ std::string describePatchTessellation(const passes::PatchTessellationMeasure& me
 // Per-stage timings, the plan and search statistics of a GL frame, as `render` prints them.
 std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame& frame,
                           const passes::ReflectionSettings& settings) {
-  std::string text = "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-                     (frame.samples > 1 ? ", " + std::to_string(frame.samples) + " samples a pixel, pass times summed over them" : "") + ":";
+  std::string text =
+      "frame " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+      (frame.samples > 1 ? ", " + std::to_string(frame.samples) + " samples a pixel, pass times summed over them"
+                         : "") +
+      ":";
   for (const render::StageTiming& stage : frame.timings.stages)
     text += " " + stage.name + " " + formatMilliseconds(stage.milliseconds) + " ms,";
   text += " total " + formatMilliseconds(frame.timings.totalMilliseconds) + " ms\n";
   if (!frame.drawnMirrors.empty()) {
     const passes::SearchStatistics& search = frame.search;
     char line[320];
-    std::snprintf(line, sizeof line,
-                  "reflections: %zu mirrors, %u vertices searched (%s), steps mean %.2f max %u, %u cold starts, %u hidden, "
-                  "%u unsolved",
-                  frame.drawnMirrors.size(), search.searched, passes::searchStrategyName(settings.search),
-                  search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
-                  search.coldStarts, search.hidden, search.unsolved);
+    std::snprintf(
+        line, sizeof line,
+        "reflections: %zu mirrors, %u vertices searched (%s), steps mean %.2f max %u, %u cold starts, %u hidden, "
+        "%u unsolved",
+        frame.drawnMirrors.size(), search.searched, passes::searchStrategyName(settings.search),
+        search.searched ? static_cast<double>(search.totalSteps) / search.searched : 0.0, search.maxSteps,
+        search.coldStarts, search.hidden, search.unsolved);
     text += line;
     if (settings.search == passes::SearchStrategy::ExplosionMap) {
       std::snprintf(line, sizeof line, " (explosion map %dx%d%s: steps are map look-ups%s)", settings.explosionMapSize,
@@ -142,30 +148,35 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
       text += line;
     }
     if (settings.search == passes::SearchStrategy::Hierarchy) {
-      std::snprintf(line, sizeof line, ", %u in no cone until enlarged, %u in none even then", search.enlarged, search.inNoCone);
+      std::snprintf(line, sizeof line, ", %u in no cone until enlarged, %u in none even then", search.enlarged,
+                    search.inNoCone);
       text += line;
     }
-    const auto extrusions = std::ranges::count_if(
-        frame.drawnMirrors, [&](std::size_t m) { return scene.objects[m].mirror && scene.objects[m].mirror->extrusion; });
+    const auto extrusions = std::ranges::count_if(frame.drawnMirrors, [&](std::size_t m) {
+      return scene.objects[m].mirror && scene.objects[m].mirror->extrusion;
+    });
     if (extrusions > 0)
-      text += settings.solveExtrusions ? "; extrusion mirrors (" + std::to_string(extrusions) +
-                                             ") solved by the 2-D reduction, 0 steps each"
-                                       : "; extrusion mirrors (" + std::to_string(extrusions) + ") searched (--extrusions search)";
+      text += settings.solveExtrusions
+                  ? "; extrusion mirrors (" + std::to_string(extrusions) + ") solved by the 2-D reduction, 0 steps each"
+                  : "; extrusion mirrors (" + std::to_string(extrusions) + ") searched (--extrusions search)";
     text += "\n";
   }
   for (const render::MirrorPlanSummary& mirror : frame.plan) {
     char line[512];
-    std::snprintf(line, sizeof line,
-                  "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left out "
-                  "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast; cast on %zu of "
-                  "%zu object tiles; predicted: searching %.1f ms, ray-casting %.1f ms (the llvmpipe fit times the rates measured here, "
-                  "%.2f, %.2f)\n",
-                  scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
-                  methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,
-                  mirror.culledVertices, mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow",
-                  mirror.belowBudgetObjects, mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels),
-                  mirror.uncoveredRayCast, mirror.castTiles.listed, mirror.castTiles.possible, mirror.predictedCost.search, mirror.predictedCost.rayCast,
-                  frame.planner.rates.search, frame.planner.rates.rayCast);
+    std::snprintf(
+        line, sizeof line,
+        "plan: mirror '%.64s' part %d (%s, ~%.0f px): %s %zu objects (%zu vertices); %zu objects, %zu vertices left "
+        "out "
+        "(%s); %zu objects (%zu vertices) under the %g px error budget; %zu uncovered pixels ray-cast; cast on %zu of "
+        "%zu object tiles; predicted: searching %.1f ms, ray-casting %.1f ms (the llvmpipe fit times the rates "
+        "measured here, "
+        "%.2f, %.2f)\n",
+        scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
+        methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,
+        mirror.culledVertices, mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow",
+        mirror.belowBudgetObjects, mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels),
+        mirror.uncoveredRayCast, mirror.castTiles.listed, mirror.castTiles.possible, mirror.predictedCost.search,
+        mirror.predictedCost.rayCast, frame.planner.rates.search, frame.planner.rates.rayCast);
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;
@@ -175,7 +186,8 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
     for (std::uint32_t count : tessellation.trianglesPerRound) text += " " + std::to_string(count);
     text += "; " + std::to_string(tessellation.midpointSearches.searched) + " midpoint searches (" +
             std::to_string(tessellation.midpointSearches.coldStarts) + " from the pyramid); " +
-            std::to_string(tessellation.predictedUnsplitObjects) + " objects planned unsplit (no edge image can reach the threshold)";
+            std::to_string(tessellation.predictedUnsplitObjects) +
+            " objects planned unsplit (no edge image can reach the threshold)";
     text += tessellation.capped ? "; CAPPED at the triangle limit: raise --threshold or lower --level\n" : "\n";
   }
   return text;
@@ -207,15 +219,18 @@ int runRender(std::span<const std::string> arguments) {
   if (Status status = overrideCamera(options, pose.camera); !status) return fail(status.error());
 
   const std::string method = options.text("method");
-  if (method != "search" && method != "explosion-map" && method != "environment-map" && method != "raytrace" && method != "none")
+  if (method != "search" && method != "explosion-map" && method != "environment-map" && method != "raytrace" &&
+      method != "none")
     return fail("--method expects search, explosion-map, environment-map, raytrace or none, got '" + method + "'");
   auto settings = parseReflectionOptions(options);
   if (!settings) return fail(settings.error());
   if (method == "explosion-map") {
     if (options.has("search") && settings->search != passes::SearchStrategy::ExplosionMap)
-      return fail("--method explosion-map places vertices by the maps; it cannot take --search " + options.text("search"));
+      return fail("--method explosion-map places vertices by the maps; it cannot take --search " +
+                  options.text("search"));
     settings->search = passes::SearchStrategy::ExplosionMap;
-    if (!options.has("virtual-pixels")) settings->virtualPixels = passes::VirtualPixels::AsPlaced;  // the paper's whole method
+    if (!options.has("virtual-pixels"))
+      settings->virtualPixels = passes::VirtualPixels::AsPlaced;  // the paper's whole method
   }
   settings->method = method == "none"              ? passes::ReflectionMethod::None
                      : method == "environment-map" ? passes::ReflectionMethod::EnvironmentMap
@@ -234,7 +249,8 @@ int runRender(std::span<const std::string> arguments) {
     if (!image) return fail(image.error());
     rgba = std::move(image->rgba);
     timings = "frame " + std::to_string(size->first) + "x" + std::to_string(size->second) + ": raytrace " +
-              formatMilliseconds(image->milliseconds) + " ms (CPU, Embree, " + std::to_string(*samples) + " rays a pixel)\n";
+              formatMilliseconds(image->milliseconds) + " ms (CPU, Embree, " + std::to_string(*samples) +
+              " rays a pixel)\n";
   } else {
     auto context = openGlContext(options.text("gl"));
     if (!context) return fail(context.error());

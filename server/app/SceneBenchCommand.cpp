@@ -20,17 +20,21 @@ namespace {
 
 CommandLine benchOptions() {
   std::vector<OptionSpec> specs = {
-      {"scenes", "LIST", "comma-separated built-in scene names, glTF files (.gltf, .glb) or JSON scene files", "all built-in scenes"},
+      {"scenes", "LIST", "comma-separated built-in scene names, glTF files (.gltf, .glb) or JSON scene files",
+       "all built-in scenes"},
       {"size", "WxH", "frame size in pixels", "640x480"},
       {"sizes", "LIST", "comma-separated frame sizes, each scene measured at each (instead of --size)", "--size"},
       {"frames", "N", "warm frames measured after the cold one", "60"},
       {"cold-size", "WxH|none", "size of the extra cold-start frame (steps only)", "1280x720"},
       {"no-reference", "", "skip the ray-traced reference (PSNR, SSIM, ray-tracing time)", ""},
       {"pass-timing", "HOW",
-       "per-pass (each pass timed: GPU timestamps, or on llvmpipe a glFinish after each, which slows the frame) | frame "
+       "per-pass (each pass timed: GPU timestamps, or on llvmpipe a glFinish after each, which slows the frame) | "
+       "frame "
        "(whole frames as served, no wait between passes; pass columns empty)",
        "per-pass"},
-      samplesOption(math::kStillFrameSamples, "samples a pixel of the still frame compared with the ray tracer (which takes the same): 1, 2, 4, 8 or 16"),
+      samplesOption(
+          math::kStillFrameSamples,
+          "samples a pixel of the still frame compared with the ray tracer (which takes the same): 1, 2, 4, 8 or 16"),
       {"csv", "FILE", "CSV output, one row per scene", "bench.csv"},
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
@@ -116,8 +120,9 @@ int runSceneBench(std::span<const std::string> arguments) {
   for (std::size_t run = 0; run < runs; ++run) {
     const std::shared_ptr<const scene::Scene>& scene = scenes[run / sizes.size()];
     std::tie(settings.width, settings.height) = sizes[run % sizes.size()];
-    std::fprintf(stderr, "bench [%zu/%zu] %s: %d frames at %dx%d%s ...\n", run + 1, runs, scene->name.c_str(), settings.frames + 1,
-                 settings.width, settings.height, settings.reference ? " + ray-traced reference" : "");
+    std::fprintf(stderr, "bench [%zu/%zu] %s: %d frames at %dx%d%s ...\n", run + 1, runs, scene->name.c_str(),
+                 settings.frames + 1, settings.width, settings.height,
+                 settings.reference ? " + ray-traced reference" : "");
     const auto started = std::chrono::steady_clock::now();
     auto result = bench::benchmarkScene(**context, scene, settings);
     if (!result) return fail(scene->name + ": " + result.error());
@@ -127,7 +132,8 @@ int runSceneBench(std::span<const std::string> arguments) {
   }
 
   std::fputs(bench::formatTable(results).c_str(), stdout);
-  for (const auto& [option, text] : {std::pair{"csv", bench::formatCsv(results)}, {"json", bench::formatJson(results)}}) {
+  for (const auto& [option, text] :
+       {std::pair{"csv", bench::formatCsv(results)}, {"json", bench::formatJson(results)}}) {
     if (Status status = writeFile(options.text(option), text); !status) return fail(status.error());
     std::printf("wrote %s\n", options.text(option).c_str());
   }

@@ -17,7 +17,8 @@ constexpr int kMaxGltfIndex = 1 << 20;
 
 std::vector<OptionSpec> gltfSceneOptions() {
   return {{"gltf-scene", "N", "with a glTF --scene: which of its scenes (index)", "the file's default scene"},
-          {"camera", "N", "with a glTF --scene: which of its cameras (index)", "the first on a node, else a view of everything"}};
+          {"camera", "N", "with a glTF --scene: which of its cameras (index)",
+           "the first on a node, else a view of everything"}};
 }
 
 Result<scene::GltfSceneChoice> parseGltfSceneOptions(const CommandLine& options) {
@@ -31,8 +32,10 @@ Result<scene::GltfSceneChoice> parseGltfSceneOptions(const CommandLine& options)
   return choice;
 }
 
-Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile, const scene::GltfSceneChoice& choice) {
-  if (auto builtin = scene::makeBuiltinScene(nameOrFile)) return std::make_shared<const scene::Scene>(std::move(*builtin));
+Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile,
+                                                      const scene::GltfSceneChoice& choice) {
+  if (auto builtin = scene::makeBuiltinScene(nameOrFile))
+    return std::make_shared<const scene::Scene>(std::move(*builtin));
   std::error_code error;
   if (!std::filesystem::exists(nameOrFile, error)) {
     std::string names;
@@ -42,7 +45,8 @@ Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrF
   if (scene::isGltfFile(nameOrFile)) {
     auto imported = scene::importGltfScene(nameOrFile, choice);
     if (!imported) return Error{imported.error()};
-    for (const std::string& note : imported->notes) std::fprintf(stderr, "specula: %s: %s\n", nameOrFile.c_str(), note.c_str());
+    for (const std::string& note : imported->notes)
+      std::fprintf(stderr, "specula: %s: %s\n", nameOrFile.c_str(), note.c_str());
     return std::make_shared<const scene::Scene>(std::move(imported->scene));
   }
   auto loaded = scene::loadSceneFile(nameOrFile);

@@ -16,6 +16,7 @@ Result<scene::GltfSceneChoice> parseGltfSceneOptions(const CommandLine& options)
 
 // Resolves --scene: a built-in scene's name, a glTF file (.gltf or .glb: its scene, chosen by
 // `choice`; what the import read differently goes to stderr) or a JSON scene file.
-Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile, const scene::GltfSceneChoice& choice = {});
+Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile,
+                                                      const scene::GltfSceneChoice& choice = {});
 
 }  // namespace specula::app

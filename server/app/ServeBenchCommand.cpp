@@ -109,8 +109,9 @@ int runServeBench(std::span<const std::string> arguments) {
     clusterOptions.resumeSecret = session::randomToken() + session::randomToken();  // 64 hex digits, this run only
     clusterOptions.drainSeconds = 0;
     clusterOptions.haproxyConfig = options.text("haproxy-config");
-    clusterOptions.serveArguments = {"--scene", options.text("scene"), "--max-sessions", std::to_string(maxSessions + 4),
-                                     "--render-threads", std::to_string(*renderThreads), "--gl", options.text("gl")};
+    clusterOptions.serveArguments = {
+        "--scene",          options.text("scene"),          "--max-sessions", std::to_string(maxSessions + 4),
+        "--render-threads", std::to_string(*renderThreads), "--gl",           options.text("gl")};
     std::fprintf(stderr, "bench serve: starting %d instances and HAProxy ...\n", *instances);
     auto started = LoopbackCluster::start(clusterOptions);
     if (!started) return fail(started.error());
@@ -127,13 +128,16 @@ int runServeBench(std::span<const std::string> arguments) {
     return text;
   };
 
-  std::string csv = "scene,sessions,width,height,seconds,fps_per_session_mean,fps_per_session_min,latency_ms_p50,"
-                    "latency_ms_p99,two_frame_intervals_ms,render_ms_mean,encode_ms_mean,bytes_per_frame,"
-                    "skipped_frames,errors,instances,sessions_per_instance\n";
-  std::string json = "{\"scene\": \"" + (*scene)->name + "\", \"instances\": " + std::to_string(*instances) + ", \"runs\": [\n";
+  std::string csv =
+      "scene,sessions,width,height,seconds,fps_per_session_mean,fps_per_session_min,latency_ms_p50,"
+      "latency_ms_p99,two_frame_intervals_ms,render_ms_mean,encode_ms_mean,bytes_per_frame,"
+      "skipped_frames,errors,instances,sessions_per_instance\n";
+  std::string json =
+      "{\"scene\": \"" + (*scene)->name + "\", \"instances\": " + std::to_string(*instances) + ", \"runs\": [\n";
   std::string table =
       "sessions  size       fps/session (min)  latency p50   p99 ms  2 intervals  render ms  encode ms  KB/frame  "
-      "skipped  errors" + std::string(cluster ? "  sessions per instance" : "") + "\n";
+      "skipped  errors" +
+      std::string(cluster ? "  sessions per instance" : "") + "\n";
   const std::size_t total = sessionCounts->size() * sizes->size() + (cluster ? 1 : 0);
   std::size_t done = 0;
   // Runs one configuration; each event is called once, when its share of the measured time has passed.
@@ -164,14 +168,16 @@ int runServeBench(std::span<const std::string> arguments) {
   for (const auto& [width, height] : *sizes) {
     for (int sessions : *sessionCounts) {
       std::string perInstance;
-      const client::LoadReport report = run(sessions, width, height, cluster ? Events{{0.5, [&] { perInstance = spread(); }}} : Events{});
+      const client::LoadReport report =
+          run(sessions, width, height, cluster ? Events{{0.5, [&] { perInstance = spread(); }}} : Events{});
       const double twoIntervals = report.fpsMean > 0.0 ? 2000.0 / report.fpsMean : 0.0;
       char row[512];
-      std::snprintf(row, sizeof row, "%8d  %4dx%-4d  %8.1f (%5.1f)     %8.1f  %8.1f  %11.1f  %9.1f  %9.2f  %8.1f  %7llu  %6llu  %s\n",
+      std::snprintf(row, sizeof row,
+                    "%8d  %4dx%-4d  %8.1f (%5.1f)     %8.1f  %8.1f  %11.1f  %9.1f  %9.2f  %8.1f  %7llu  %6llu  %s\n",
                     sessions, width, height, report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99,
                     twoIntervals, report.renderMsMean, report.encodeMsMean, report.bytesPerFrame / 1024.0,
-                    static_cast<unsigned long long>(report.skippedFrames), static_cast<unsigned long long>(report.errors),
-                    perInstance.c_str());
+                    static_cast<unsigned long long>(report.skippedFrames),
+                    static_cast<unsigned long long>(report.errors), perInstance.c_str());
       table += row;
       csv += (*scene)->name + "," + std::to_string(sessions) + "," + std::to_string(width) + "," +
              std::to_string(height) + "," + number(report.seconds, 1) + "," + number(report.fpsMean, 2) + "," +
@@ -188,7 +194,8 @@ int runServeBench(std::span<const std::string> arguments) {
     const auto [width, height] = sizes->front();
     std::string before, after;
     const client::LoadReport report = run(maxSessions, width, height,
-                                          {{1.0 / 3.0, [&] {
+                                          {{1.0 / 3.0,
+                                            [&] {
                                               before = spread();
                                               cluster->kill(0);
                                             }},
@@ -202,12 +209,13 @@ int runServeBench(std::span<const std::string> arguments) {
       longestGap = std::max(longestGap, session.longestGapMs);
     }
     char line[512];
-    std::snprintf(line, sizeof line,
-                  "instance 0 killed a third of the way into %d sessions at %dx%d (sessions per instance %s, then %s): %d "
-                  "reconnected, %d resumed, longest gap between two frames %.0f ms; %.1f fps a session over the run, "
-                  "%llu errors\n",
-                  maxSessions, width, height, before.c_str(), after.c_str(), moved, moved - refused, longestGap, report.fpsMean,
-                  static_cast<unsigned long long>(report.errors));
+    std::snprintf(
+        line, sizeof line,
+        "instance 0 killed a third of the way into %d sessions at %dx%d (sessions per instance %s, then %s): %d "
+        "reconnected, %d resumed, longest gap between two frames %.0f ms; %.1f fps a session over the run, "
+        "%llu errors\n",
+        maxSessions, width, height, before.c_str(), after.c_str(), moved, moved - refused, longestGap, report.fpsMean,
+        static_cast<unsigned long long>(report.errors));
     failover = line;
     json += std::string(done > 1 ? ",\n" : "") + client::loadReportJson(report);
   }
@@ -215,7 +223,8 @@ int runServeBench(std::span<const std::string> arguments) {
   if (service) service->stop();
   cluster.reset();
   std::cout << "scene " << (*scene)->name << ", " << options.text("encoding") << " encoding, " << *renderThreads
-            << " render thread(s)" << (*instances ? ", " + std::to_string(*instances) + " instances behind HAProxy" : std::string())
+            << " render thread(s)"
+            << (*instances ? ", " + std::to_string(*instances) + " instances behind HAProxy" : std::string())
             << "; latency = camera update sent -> frame reflecting it received\n"
             << table << failover;
   for (const char* option : {"csv", "json"})

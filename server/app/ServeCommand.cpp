@@ -21,14 +21,16 @@ namespace specula::app {
 
 namespace {
 
-constexpr auto kShutdownGrace = std::chrono::milliseconds(900);  // every client closed within 1 s of SIGTERM (after the drain)
+constexpr auto kShutdownGrace =
+    std::chrono::milliseconds(900);  // every client closed within 1 s of SIGTERM (after the drain)
 constexpr std::size_t kMaxSecretFileBytes = 4096;
 
 CommandLine serveOptions() {
   std::vector<OptionSpec> specs = {
       {"bind", "ADDRESS", "address to listen on; anything but loopback needs --token", "127.0.0.1"},
       {"port", "PORT", "TCP port; 0 picks a free one (printed at start)", "8080"},
-      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file", "checker-sphere"},
+      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file",
+       "checker-sphere"},
       {"max-sessions", "N", "concurrent sessions; more are refused with close code 1013", "16"},
       {"token", "SECRET", "clients must send it (?token= or Authorization: Bearer); also read from SPECULA_TOKEN", ""},
       {"web-root", "DIR", "folder served at / (the browser client)", SPECULA_DEFAULT_WEB_ROOT},
@@ -37,13 +39,18 @@ CommandLine serveOptions() {
       {"max-fps", "FPS", "frames per second per session at most", "60"},
       {"still-delay", "MS", "quiet time after input before a full-quality still frame", "150"},
       {"max-size", "WxH", "largest viewport a client may ask for", "3840x2160"},
-      {"resume-secret-file", "FILE", "sign resume tokens with this secret (>= 32 bytes; also SPECULA_RESUME_SECRET): instances sharing it resume each other's sessions", "tokens kept in this process"},
+      {"resume-secret-file", "FILE",
+       "sign resume tokens with this secret (>= 32 bytes; also SPECULA_RESUME_SECRET): instances sharing it resume "
+       "each other's sessions",
+       "tokens kept in this process"},
       {"resume-lifetime", "SECONDS", "how long a resume token stays valid", "600"},
-      {"drain-seconds", "N", "on SIGTERM: answer /readyz 503 and refuse new sessions for N s, then close every session (1001) and exit", "0"},
+      {"drain-seconds", "N",
+       "on SIGTERM: answer /readyz 503 and refuse new sessions for N s, then close every session (1001) and exit", "0"},
       {"public-metrics", "", "serve /metrics without the token (for a scraper inside a private network)", ""},
   };
   for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
-  for (OptionSpec& spec : settingOptions(session::sessionSettingsSchema(), session::SessionSettings{}, {}, " (sessions' default)"))
+  for (OptionSpec& spec :
+       settingOptions(session::sessionSettingsSchema(), session::SessionSettings{}, {}, " (sessions' default)"))
     specs.push_back(std::move(spec));
   specs.push_back(glOption());
   return CommandLine(
@@ -98,14 +105,13 @@ int runServe(std::span<const std::string> arguments) {
   session::SessionSettings sessionDefaults;  // every session starts with these
   const Status settings = parseSettingOptions(options, session::sessionSettingsSchema(), {}, sessionDefaults);
   applyImpliedOptions(options, sessionDefaults.reflection);
-  for (const Status& status : {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
-                               renderThreads ? Status{} : Error{renderThreads.error()},
-                               encodeThreads ? Status{} : Error{encodeThreads.error()},
-                               stillDelay ? Status{} : Error{stillDelay.error()}, maxFps ? Status{} : Error{maxFps.error()},
-                               maxSize ? Status{} : Error{maxSize.error()},
-                               settings,
-                               resumeLifetime ? Status{} : Error{resumeLifetime.error()},
-                               drainSeconds ? Status{} : Error{drainSeconds.error()}, resumeSecret ? Status{} : Error{resumeSecret.error()}})
+  for (const Status& status :
+       {port ? Status{} : Error{port.error()}, maxSessions ? Status{} : Error{maxSessions.error()},
+        renderThreads ? Status{} : Error{renderThreads.error()},
+        encodeThreads ? Status{} : Error{encodeThreads.error()}, stillDelay ? Status{} : Error{stillDelay.error()},
+        maxFps ? Status{} : Error{maxFps.error()}, maxSize ? Status{} : Error{maxSize.error()}, settings,
+        resumeLifetime ? Status{} : Error{resumeLifetime.error()},
+        drainSeconds ? Status{} : Error{drainSeconds.error()}, resumeSecret ? Status{} : Error{resumeSecret.error()}})
     if (!status) return fail(status.error());
   if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
@@ -113,7 +119,7 @@ int runServe(std::span<const std::string> arguments) {
   net::ServerOptions serverOptions;
   serverOptions.bindAddress = options.text("bind");
   serverOptions.port = static_cast<std::uint16_t>(*port);
-  serverOptions.token = options.has("token") ? options.text("token")
+  serverOptions.token = options.has("token")           ? options.text("token")
                         : std::getenv("SPECULA_TOKEN") ? std::getenv("SPECULA_TOKEN")
                                                        : "";
   serverOptions.webRoot = options.text("web-root");
@@ -152,8 +158,9 @@ int runServe(std::span<const std::string> arguments) {
   if (!service) return fail(service.error());
 
   const unsigned listeningPort = (*service)->port();
-  std::printf("specula serve: scene '%s' at http://%s:%u/ (WebSocket /ws); listening on %s:%u\n", (*scene)->name.c_str(),
-              serverOptions.bindAddress.c_str(), listeningPort, serverOptions.bindAddress.c_str(), listeningPort);
+  std::printf("specula serve: scene '%s' at http://%s:%u/ (WebSocket /ws); listening on %s:%u\n",
+              (*scene)->name.c_str(), serverOptions.bindAddress.c_str(), listeningPort,
+              serverOptions.bindAddress.c_str(), listeningPort);
   std::fflush(stdout);
 
   int signal = 0;

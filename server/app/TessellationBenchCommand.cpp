@@ -24,7 +24,8 @@ CommandLine tessellationBenchOptions() {
       "frame and tessellation-pass time, and PSNR, SSIM and mirror mismatch against the ray-traced reference.\n"
       "Then names, per scene, the adaptive setting with the fewest vertices that is as accurate as full level 4.",
       {
-          {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files", "quad,teapot-table,checker-sphere,kitchen"},
+          {"scenes", "LIST", "comma-separated built-in scene names or JSON scene files",
+           "quad,teapot-table,checker-sphere,kitchen"},
           {"size", "WxH", "frame size in pixels", "640x480"},
           {"frames", "N", "timed frames per setting, after a warm-up frame", "3"},
           {"time", "SECONDS", "scene time of the pose measured", "0"},
@@ -61,11 +62,11 @@ int runTessellationBench(std::span<const std::string> arguments) {
   std::string goals;
   for (std::size_t i = 0; i < scenes->size(); ++i) {
     const std::string& name = (*scenes)[i]->name;
-    auto result = bench::benchmarkTessellation(**context, (*scenes)[i], settings, sweep,
-                                               [&](std::size_t index, const std::string& setting) {
-                                                 std::fprintf(stderr, "bench tessellation [%zu/%zu] %s: [%zu/%zu] %s\n", i + 1,
-                                                              scenes->size(), name.c_str(), index + 1, sweep.size(), setting.c_str());
-                                               });
+    auto result = bench::benchmarkTessellation(
+        **context, (*scenes)[i], settings, sweep, [&](std::size_t index, const std::string& setting) {
+          std::fprintf(stderr, "bench tessellation [%zu/%zu] %s: [%zu/%zu] %s\n", i + 1, scenes->size(), name.c_str(),
+                       index + 1, sweep.size(), setting.c_str());
+        });
     if (!result) return fail(name + ": " + result.error());
     const auto best = bench::cheapestMatchingFullLevel4(*result);
     const auto full = std::find_if(result->begin(), result->end(), [](const auto& row) {
@@ -73,17 +74,18 @@ int runTessellationBench(std::span<const std::string> arguments) {
     });
     char line[256];
     if (best && full != result->end())
-      std::snprintf(line, sizeof line, "%s: full level 4 has mismatch %.4f with %u vertices; %s matches it with %u (%.0f %%)\n",
+      std::snprintf(line, sizeof line,
+                    "%s: full level 4 has mismatch %.4f with %u vertices; %s matches it with %u (%.0f %%)\n",
                     name.c_str(), full->mirrorMismatch, full->vertices(), best->setting.c_str(), best->vertices(),
                     100.0 * best->vertices() / std::max(1u, full->vertices()));
-    else
-      std::snprintf(line, sizeof line, "%s: no adaptive setting is as accurate as full level 4\n", name.c_str());
+    else std::snprintf(line, sizeof line, "%s: no adaptive setting is as accurate as full level 4\n", name.c_str());
     goals += line;
     rows.insert(rows.end(), result->begin(), result->end());
   }
   std::fputs(bench::formatTessellationTable(rows).c_str(), stdout);
   std::fputs(goals.c_str(), stdout);
-  for (const auto& [option, text] : {std::pair{"csv", bench::formatTessellationCsv(rows)}, {"json", bench::formatTessellationJson(rows)}}) {
+  for (const auto& [option, text] :
+       {std::pair{"csv", bench::formatTessellationCsv(rows)}, {"json", bench::formatTessellationJson(rows)}}) {
     if (Status status = writeFile(options.text(option), text); !status) return fail(status.error());
     std::printf("wrote %s\n", options.text(option).c_str());
   }

@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
           {"serve", "stream a scene to browsers and thin clients over HTTP + WebSocket (JPEG frames)", runServe},
           {"render", "render one frame of a scene to a PNG or JPEG file and print per-stage timings", runRender},
           {"scenes", "list the built-in scenes", runScenes},
-          {"bench", "measure time per pass, search steps and accuracy against exact references; CSV and JSON", runBench},
+          {"bench", "measure time per pass, search steps and accuracy against exact references; CSV and JSON",
+           runBench},
       },
       arguments);
 }

@@ -25,7 +25,8 @@ std::string base64UrlEncode(std::string_view bytes) {
   std::size_t i = 0;
   for (; i + 3 <= bytes.size(); i += 3) {
     const std::uint32_t group = (std::uint32_t{static_cast<unsigned char>(bytes[i])} << 16) |
-                                (std::uint32_t{static_cast<unsigned char>(bytes[i + 1])} << 8) | static_cast<unsigned char>(bytes[i + 2]);
+                                (std::uint32_t{static_cast<unsigned char>(bytes[i + 1])} << 8) |
+                                static_cast<unsigned char>(bytes[i + 2]);
     for (int shift = 18; shift >= 0; shift -= 6) text += kAlphabet[(group >> shift) & 63];
   }
   const std::size_t rest = bytes.size() - i;

@@ -38,12 +38,12 @@ CommandLine::CommandLine(std::string usage, std::string summary, std::vector<Opt
   app_->formatter(std::make_shared<HelpFormatter>(std::move(usage)));
   app_->set_help_flag("-h,--help", "print this help");
   for (const OptionSpec& option : options_) {
-    const std::string help = option.help + (option.defaultValue.empty() ? "" : " (default: " + option.defaultValue + ")");
-    CLI::Option* added = option.valueName.empty()
-                             ? app_->add_flag("--" + option.name, help)
-                             : app_->add_option("--" + option.name, values_[option.name], help)
-                                   ->type_name(option.valueName)
-                                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    const std::string help =
+        option.help + (option.defaultValue.empty() ? "" : " (default: " + option.defaultValue + ")");
+    CLI::Option* added = option.valueName.empty() ? app_->add_flag("--" + option.name, help)
+                                                  : app_->add_option("--" + option.name, values_[option.name], help)
+                                                        ->type_name(option.valueName)
+                                                        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     added->allow_extra_args(false);
   }
 }

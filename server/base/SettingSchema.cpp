@@ -16,8 +16,8 @@ std::string numberText(double value) {
 
 }  // namespace
 
-SettingInfo choiceSetting(std::string_view group, std::string name, std::string help, std::vector<SettingChoice> choices,
-                   std::string protoField) {
+SettingInfo choiceSetting(std::string_view group, std::string name, std::string help,
+                          std::vector<SettingChoice> choices, std::string protoField) {
   SettingInfo info;
   info.name = std::move(name);
   info.group = group;
@@ -28,8 +28,8 @@ SettingInfo choiceSetting(std::string_view group, std::string name, std::string 
   return info;
 }
 
-SettingInfo numberSetting(std::string_view group, SettingType type, std::string name, std::string valueName, std::string help,
-                   double min, double max, std::string protoField) {
+SettingInfo numberSetting(std::string_view group, SettingType type, std::string name, std::string valueName,
+                          std::string help, double min, double max, std::string protoField) {
   SettingInfo info;
   info.name = std::move(name);
   info.group = group;
@@ -69,7 +69,8 @@ std::optional<int> findChoice(const SettingInfo& setting, std::string_view name)
 std::optional<std::string> settingProblem(const SettingInfo& setting, double value) {
   switch (setting.type) {
     case SettingType::Choice:
-      if (value >= 0.0 && value < static_cast<double>(setting.choices.size()) && value == std::floor(value)) return std::nullopt;
+      if (value >= 0.0 && value < static_cast<double>(setting.choices.size()) && value == std::floor(value))
+        return std::nullopt;
       return setting.name + " must be " + settingRange(setting);
     case SettingType::Integer:
       if (value != std::floor(value)) return setting.name + " must be an integer in " + settingRange(setting);
@@ -85,7 +86,7 @@ Result<double> parseSetting(const SettingInfo& setting, std::string_view text) {
   const auto expected = [&] {
     const std::string what = setting.type == SettingType::Choice    ? settingRange(setting)
                              : setting.type == SettingType::Integer ? "an integer in " + settingRange(setting)
-                                                                     : "a number in " + settingRange(setting);
+                                                                    : "a number in " + settingRange(setting);
     return Error{setting.name + " expects " + what + ", got '" + std::string(text) + "'"};
   };
   if (setting.type == SettingType::Choice) {

@@ -18,7 +18,7 @@ enum class SettingType {
 };
 
 struct SettingChoice {
-  std::string name;        // "crack-free": what the command line and the browser send
+  std::string name;  // "crack-free": what the command line and the browser send
   std::string help;
   std::string protoValue;  // the protocol enum's value name ("TESSELLATION_CRACK_FREE"); empty for a number field
 };
@@ -46,8 +46,8 @@ struct Setting {
 };
 
 // A setting of one of `choices`, and a Number or Integer one in [min, max].
-SettingInfo choiceSetting(std::string_view group, std::string name, std::string help, std::vector<SettingChoice> choices,
-                          std::string protoField = "");
+SettingInfo choiceSetting(std::string_view group, std::string name, std::string help,
+                          std::vector<SettingChoice> choices, std::string protoField = "");
 SettingInfo numberSetting(std::string_view group, SettingType type, std::string name, std::string valueName,
                           std::string help, double min, double max, std::string protoField = "");
 

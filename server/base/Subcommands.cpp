@@ -27,7 +27,8 @@ class SubcommandHelp : public CLI::Formatter {
 }  // namespace
 
 int runSubcommand(const std::string& program, const std::string& summary, const std::vector<Subcommand>& subcommands,
-                  std::span<const std::string> arguments, const std::function<int(std::span<const std::string>)>& fallback) {
+                  std::span<const std::string> arguments,
+                  const std::function<int(std::span<const std::string>)>& fallback) {
   CLI::App app(summary, program);
   app.formatter(std::make_shared<SubcommandHelp>(program + " <command> [options]"));
   app.set_help_flag("-h,--help", "print this help");
@@ -39,9 +40,9 @@ int runSubcommand(const std::string& program, const std::string& summary, const 
     added->set_help_flag();
     added->parse_complete_callback([&chosen, &subcommand] { chosen = &subcommand; });
   }
-  const bool namesOne = !arguments.empty() && std::any_of(subcommands.begin(), subcommands.end(), [&](const Subcommand& s) {
-    return s.name == arguments.front();
-  });
+  const bool namesOne =
+      !arguments.empty() && std::any_of(subcommands.begin(), subcommands.end(),
+                                        [&](const Subcommand& s) { return s.name == arguments.front(); });
   if (fallback && !namesOne) return fallback(arguments);
   std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 takes them last first
   try {

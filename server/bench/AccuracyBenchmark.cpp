@@ -69,7 +69,8 @@ scene::Scene withMirrorMeshes(const scene::Scene& scene, glm::ivec2 slicesAndSta
   for (scene::SceneObject& object : result.objects) {
     if (!approximatesAnExactShape(object)) continue;
     const scene::AnalyticShape& shape = *object.mirror->analytic;
-    scene::Mesh mesh = scene::primitives::uvSphere(scene.meshes[object.mesh].name, 1.0f, slicesAndStacks.x, slicesAndStacks.y);
+    scene::Mesh mesh =
+        scene::primitives::uvSphere(scene.meshes[object.mesh].name, 1.0f, slicesAndStacks.x, slicesAndStacks.y);
     // The unit sphere onto the shape in object space: positions by centre + radii, normals by 1 / radii.
     for (scene::Vertex& v : mesh.vertices) {
       v.position = shape.center + v.position * shape.radii;
@@ -89,16 +90,19 @@ std::vector<AccuracySetting> accuracySweep(const scene::Scene& scene) {
     setting.settings.environmentMapSize = faceSize;
     sweep.push_back(setting);
   }
-  sweep.push_back(withTessellation("search, no tessellation", "search", {TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0}));
+  sweep.push_back(withTessellation("search, no tessellation", "search",
+                                   {TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0}));
   for (float pixels : {2.0f, 1.0f, 0.5f, 0.25f}) {
     char name[64];
     std::snprintf(name, sizeof name, "adaptive %g px", pixels);
-    sweep.push_back(withTessellation(name, "adaptive", {TessellationMode::CrackFree, TessellationMetric::Pixels, pixels, 4}));
+    sweep.push_back(
+        withTessellation(name, "adaptive", {TessellationMode::CrackFree, TessellationMetric::Pixels, pixels, 4}));
   }
   for (float angle : {0.01f, 0.003f, 0.001f}) {
     char name[64];
     std::snprintf(name, sizeof name, "adaptive angle %g", angle);
-    sweep.push_back(withTessellation(name, "adaptive", {TessellationMode::CrackFree, TessellationMetric::Angle, angle, 5}));
+    sweep.push_back(
+        withTessellation(name, "adaptive", {TessellationMode::CrackFree, TessellationMetric::Angle, angle, 5}));
   }
   for (int level = 1; level <= 4; ++level)
     sweep.push_back(withTessellation("full level " + std::to_string(level), "full",
@@ -172,8 +176,9 @@ struct References {
   double medianMilliseconds = 0.0;
 };
 
-Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& scene, const std::vector<scene::ScenePose>& path,
-                                   const AccuracyBenchOptions& options, const std::string& what,
+Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& scene,
+                                   const std::vector<scene::ScenePose>& path, const AccuracyBenchOptions& options,
+                                   const std::string& what,
                                    const std::function<void(const std::string& step)>& progress) {
   auto tracer = reference::RayTracer::create(scene);
   if (!tracer) return Error{tracer.error()};
@@ -192,8 +197,8 @@ Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& sc
 
 // One setting along the path, compared with `truths`.
 Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene::ScenePose>& path,
-                                   const std::vector<reference::ReferenceImage>& truths, const AccuracyBenchOptions& options,
-                                   const AccuracySetting& setting) {
+                                   const std::vector<reference::ReferenceImage>& truths,
+                                   const AccuracyBenchOptions& options, const AccuracySetting& setting) {
   const ReflectionMethod method = setting.settings.method;
   const bool measurePoints = hasExactMirror(r.scene()) && method == ReflectionMethod::Search;
   // Warm-up at the first pose: buffer sizes, shader caches, coherence seeds.
@@ -213,7 +218,8 @@ Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene:
     mismatches.push_back(comparison->mirrorMismatch);
     // A frame that searched nothing ray-cast its mirrors: no virtual triangles, no reflection points.
     const bool searchedAny = frame->search.searched > 0;
-    drawn.push_back(method == ReflectionMethod::Search && !searchedAny ? 0 : 3 * reflectionTriangles(r, *frame, method));
+    drawn.push_back(method == ReflectionMethod::Search && !searchedAny ? 0
+                                                                       : 3 * reflectionTriangles(r, *frame, method));
     searched.push_back(frame->search.searched + frame->tessellation.midpointSearches.searched);
     if (measurePoints && searchedAny) {
       ReflectionPointErrors errors = measureReflectionPoints(r, path[i], *frame);

@@ -49,8 +49,8 @@ scene::Scene withMirrorMeshes(const scene::Scene& scene, glm::ivec2 slicesAndSta
 
 struct AccuracyRow {
   std::string scene, setting, family;
-  bool reference = false;         // the ray tracer's own row: error 0 by definition, its time
-  double frameMilliseconds = 0.0;  // median over the path (reference: ray-tracing time)
+  bool reference = false;                               // the ray tracer's own row: error 0 by definition, its time
+  double frameMilliseconds = 0.0;                       // median over the path (reference: ray-tracing time)
   double psnr = 0.0, ssim = 0.0, mirrorMismatch = 0.0;  // means over the path against the ray tracer
   // Reflection-point error in pixels over every vertex of the path (search rows on scenes with an
   // analytic sphere mirror; absent otherwise).

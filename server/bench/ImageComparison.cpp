@@ -11,7 +11,8 @@ namespace {
 constexpr double kPsnrCeiling = 100.0;
 }  // namespace
 
-Result<ImageComparison> compareWithReference(const render::RenderedFrame& frame, const reference::ReferenceImage& truth) {
+Result<ImageComparison> compareWithReference(const render::RenderedFrame& frame,
+                                             const reference::ReferenceImage& truth) {
   const reference::RgbaView ours{frame.rgba, frame.width, frame.height}, theirs{truth.rgba, truth.width, truth.height};
   auto psnr = reference::psnr(ours, theirs);
   auto ssim = reference::ssim(ours, theirs);

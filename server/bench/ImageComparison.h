@@ -13,7 +13,8 @@ struct ImageComparison {
   double mirrorMismatch = 0.0;    // share of mirror pixels that differ strongly
 };
 
-Result<ImageComparison> compareWithReference(const render::RenderedFrame& frame, const reference::ReferenceImage& truth);
+Result<ImageComparison> compareWithReference(const render::RenderedFrame& frame,
+                                             const reference::ReferenceImage& truth);
 
 double median(std::vector<double> values);
 

@@ -20,7 +20,8 @@ namespace specula::bench {
 namespace {
 
 bool isAnalyticSphere(const scene::SceneObject& object) {
-  return object.mirror && object.mirror->analytic && object.mirror->analytic->kind == scene::AnalyticShape::Kind::Sphere;
+  return object.mirror && object.mirror->analytic &&
+         object.mirror->analytic->kind == scene::AnalyticShape::Kind::Sphere;
 }
 
 bool hasExactShape(const scene::SceneObject& object, const scene::Scene& scene) {
@@ -39,7 +40,7 @@ bool hasExactShape(const scene::SceneObject& object, const scene::Scene& scene) 
 struct PatchPart {
   std::shared_ptr<const math::PatchReflectionSolver> solver;  // the whole mirror, world space
   std::shared_ptr<const reference::PatchSurface> surface;     // the same, for occlusion
-  const std::vector<std::uint8_t>* triangleParts = nullptr;  // null: one part
+  const std::vector<std::uint8_t>* triangleParts = nullptr;   // null: one part
   int part = 0, segments = 1;
 
   bool counts(const glm::dvec3& eye, const math::PatchPoint& point, bool searchHid) const {
@@ -79,13 +80,14 @@ struct ExactMirror {
     if (!std::holds_alternative<math::Extrusion>(shape)) return false;  // patches: their own vertices are skipped
     const auto& extrusion = std::get<math::Extrusion>(shape);
     const glm::dvec3 offset = point - extrusion.axisPoint;
-    return glm::length(glm::dvec2(glm::dot(offset, extrusion.u), glm::dot(offset, extrusion.v)) / extrusion.radii) <= kOnSurface;
+    return glm::length(glm::dvec2(glm::dot(offset, extrusion.u), glm::dot(offset, extrusion.v)) / extrusion.radii) <=
+           kOnSurface;
   }
 
   // A surface of patches may reflect a vertex at several points: the one nearest `searched` of those
   // that count (PatchPart) is judged.
-  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex, const glm::dvec3& searched,
-                                               bool searchHid) const {
+  std::optional<math::SurfacePoint> reflection(const glm::dvec3& eye, const glm::dvec3& vertex,
+                                               const glm::dvec3& searched, bool searchHid) const {
     if (const auto* patches = std::get_if<PatchPart>(&shape)) {
       std::vector<math::PatchPoint> points = patches->solver->solve(eye, vertex);
       // Newton's method in double precision from by the searched point finds a solution there if
@@ -115,7 +117,8 @@ struct ExactMirror {
 };
 
 // The mirror's exact shape in world space; nullopt when its transform does not keep a sphere one.
-std::optional<ExactMirror> worldShape(const scene::MirrorInfo& mirror, const scene::Mesh& mesh, const glm::mat4& objectToWorld) {
+std::optional<ExactMirror> worldShape(const scene::MirrorInfo& mirror, const scene::Mesh& mesh,
+                                      const glm::mat4& objectToWorld) {
   if (mirror.extrusion) {
     const auto extrusion = mirror.extrusion->transformed(glm::dmat4(objectToWorld));
     if (!extrusion) return std::nullopt;
@@ -157,11 +160,13 @@ bool hasExactMirror(const scene::Scene& scene) {
 namespace {
 
 // Judges one search result against the exact solver and adds it to `errors`.
-void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const ExactMirror& mirror, const glm::dvec3& eye,
-           const glm::dvec3& vertex, const glm::vec3& reflectionPoint, int flags, std::size_t slot, double marginPixels) {
+void judge(ReflectionPointErrors& errors, const render::RenderedFrame& frame, const ExactMirror& mirror,
+           const glm::dvec3& eye, const glm::dvec3& vertex, const glm::vec3& reflectionPoint, int flags,
+           std::size_t slot, double marginPixels) {
   if (mirror.encloses(vertex)) return;
   const bool searchVisible = (flags & (passes::ReflectedVertex::kHidden | passes::ReflectedVertex::kUnsolved)) == 0;
-  const std::optional<math::SurfacePoint> solved = mirror.reflection(eye, vertex, glm::dvec3(reflectionPoint), !searchVisible);
+  const std::optional<math::SurfacePoint> solved =
+      mirror.reflection(eye, vertex, glm::dvec3(reflectionPoint), !searchVisible);
   const std::optional<glm::dvec3> exact = solved ? std::optional(solved->position) : std::nullopt;
   if (!exact) {
     errors.exactHiddenButSearchVisible += searchVisible;
@@ -202,7 +207,8 @@ class ExactShapes {
  private:
   std::optional<ExactMirror> make(std::size_t mirror, int part) {
     // Mirrors not drawn this frame still hold an older frame's results.
-    if (std::find(frame_.drawnMirrors.begin(), frame_.drawnMirrors.end(), mirror) == frame_.drawnMirrors.end()) return std::nullopt;
+    if (std::find(frame_.drawnMirrors.begin(), frame_.drawnMirrors.end(), mirror) == frame_.drawnMirrors.end())
+      return std::nullopt;
     const scene::Scene& scene = renderer_.scene();
     const scene::SceneObject& object = scene.objects[mirror];
     if (!hasExactShape(object, scene)) return std::nullopt;
@@ -219,7 +225,8 @@ class ExactShapes {
     }
     const auto& parts = renderer_.reflectionSlots().parts;
     const auto split = parts.find(mirror);
-    if (split != parts.end() && split->second.parts.size() > 1 && split->second.triangleParts.size() == mesh.triangleCount()) {
+    if (split != parts.end() && split->second.parts.size() > 1 &&
+        split->second.triangleParts.size() == mesh.triangleCount()) {
       patches.triangleParts = &split->second.triangleParts;
       patches.part = part;
       patches.segments = mesh.patchSegments;

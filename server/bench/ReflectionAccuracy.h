@@ -17,13 +17,13 @@ glm::dvec2 toPixels(const passes::FrameView& view, const glm::vec3& world, int w
 
 // One vertex both the search and the exact solver call visible, on screen in pixels.
 struct MeasuredVertex {
-  std::size_t slot;    // its reflection slot
-  glm::dvec2 exact;    // exact R
-  glm::dvec2 offset;   // search R − exact R
+  std::size_t slot;   // its reflection slot
+  glm::dvec2 exact;   // exact R
+  glm::dvec2 offset;  // search R − exact R
 };
 
 struct ReflectionPointErrors {
-  std::vector<double> pixels;            // |offset| of each measured vertex, in the order of `vertices`
+  std::vector<double> pixels;  // |offset| of each measured vertex, in the order of `vertices`
   std::vector<MeasuredVertex> vertices;
   int exactHiddenButSearchVisible = 0;  // reflected although no reflection point exists
   int searchHiddenButExactVisible = 0;  // dropped although its reflection is visible

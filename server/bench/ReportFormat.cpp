@@ -44,7 +44,9 @@ std::string significant(double value) {
   return text;
 }
 
-std::string optionalNumber(const std::optional<double>& value, int decimals) { return value ? number(*value, decimals) : ""; }
+std::string optionalNumber(const std::optional<double>& value, int decimals) {
+  return value ? number(*value, decimals) : "";
+}
 
 std::string orDash(const std::string& text) { return text.empty() ? "-" : text; }
 

@@ -43,7 +43,8 @@ std::vector<render::StageTiming> stageMedians(const std::vector<render::FrameTim
   for (const std::string& name : names) {
     std::vector<double> values;
     for (const render::FrameTimings& frame : frames) {
-      const auto stage = std::find_if(frame.stages.begin(), frame.stages.end(), [&](const auto& s) { return s.name == name; });
+      const auto stage =
+          std::find_if(frame.stages.begin(), frame.stages.end(), [&](const auto& s) { return s.name == name; });
       values.push_back(stage == frame.stages.end() ? 0.0 : stage->milliseconds);
     }
     medians.push_back({name, median(std::move(values))});
@@ -53,8 +54,10 @@ std::vector<render::StageTiming> stageMedians(const std::vector<render::FrameTim
 
 // `pose` as a still frame (BenchOptions::stillSamples) against the ray tracer at the same samples,
 // and the ray tracer's time at one ray a pixel, what the warm frames' time is set against.
-Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_ptr<const scene::Scene> scene, render::Renderer& renderer,
-                                                                   const scene::ScenePose& pose, const BenchOptions& options) {
+Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_ptr<const scene::Scene> scene,
+                                                                   render::Renderer& renderer,
+                                                                   const scene::ScenePose& pose,
+                                                                   const BenchOptions& options) {
   auto still = renderer.render(pose, options.width, options.height, options.reflection, options.stillSamples);
   if (!still) return Error{still.error()};
   auto tracer = reference::RayTracer::create(std::move(scene));
@@ -69,14 +72,17 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
   if (!truth) return Error{truth.error()};
   auto comparison = bench::compareWithReference(*still, *truth);
   if (!comparison) return Error{comparison.error()};
-  return SceneBenchResult::ReferenceComparison{comparison->psnr, comparison->ssim, comparison->mirrorMismatch, options.stillSamples,
+  return SceneBenchResult::ReferenceComparison{comparison->psnr,
+                                               comparison->ssim,
+                                               comparison->mirrorMismatch,
+                                               options.stillSamples,
                                                options.stillSamples == 1 ? truth->milliseconds : single->milliseconds,
                                                truth->milliseconds};
 }
 
 // The last pose as a still frame at each of kStillSampleCounts, median over a few frames.
 Result<std::vector<SceneBenchResult::StillFrame>> stillFrames(render::Renderer& renderer, const scene::ScenePose& pose,
-                                                               const BenchOptions& options) {
+                                                              const BenchOptions& options) {
   constexpr int kStillFrames = 3;
   std::vector<SceneBenchResult::StillFrame> rows;
   for (const int samples : SceneBenchResult::kStillSampleCounts) {
@@ -96,7 +102,8 @@ constexpr int kSearchComparisonFrames = 10;
 
 // Every search strategy (the explosion map's look-ups unrefined) along the scene's first frames
 // (coherence from the first, cold, one), on every mirror's mesh, extrusions included.
-Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::Renderer& renderer, const BenchOptions& options) {
+Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::Renderer& renderer,
+                                                                        const BenchOptions& options) {
   std::vector<SceneBenchResult::SearchComparison> comparisons;
   for (passes::SearchStrategy strategy : passes::kSearchStrategies) {
     passes::ReflectionSettings settings = options.reflection;
@@ -109,8 +116,8 @@ Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::
     StepAccumulator steps;
     std::vector<double> milliseconds;
     for (int frame = 0; frame <= kSearchComparisonFrames; ++frame) {
-      auto rendered = renderer.render(scene::ScenePose::at(renderer.scene(), frame / options.framesPerSecond), options.width,
-                                      options.height, settings);
+      auto rendered = renderer.render(scene::ScenePose::at(renderer.scene(), frame / options.framesPerSecond),
+                                      options.width, options.height, settings);
       if (!rendered) return Error{rendered.error()};
       if (frame == 0 || rendered->search.searched == 0) continue;
       steps.add(rendered->search);
@@ -118,7 +125,8 @@ Result<std::vector<SceneBenchResult::SearchComparison>> compareSearches(render::
       comparison.inNoCone += rendered->search.inNoCone;
       double searchStages = 0.0;
       for (const render::StageTiming& stage : rendered->timings.stages)
-        if (stage.name == "gbuffer-pyramid" || stage.name == "ray-hierarchy" || stage.name == "explosion-map" || stage.name == "search")
+        if (stage.name == "gbuffer-pyramid" || stage.name == "ray-hierarchy" || stage.name == "explosion-map" ||
+            stage.name == "search")
           searchStages += stage.milliseconds;
       milliseconds.push_back(searchStages);
     }
@@ -142,14 +150,15 @@ Status compareMethods(render::Renderer& renderer, const BenchOptions& options, S
     std::vector<double> totals;
     bool planned = false;
     for (int frame = 0; frame <= kMethodComparisonFrames; ++frame) {
-      auto rendered = renderer.render(scene::ScenePose::at(renderer.scene(), frame / options.framesPerSecond), options.width,
-                                      options.height, settings);
+      auto rendered = renderer.render(scene::ScenePose::at(renderer.scene(), frame / options.framesPerSecond),
+                                      options.width, options.height, settings);
       if (!rendered) return Error{rendered.error()};
       planned = planned || !rendered->plan.empty();
       if (frame > 0) totals.push_back(rendered->timings.totalMilliseconds);
     }
     if (!planned) return {};
-    (rule == passes::RayCastRule::Never ? result.searchedFrameMilliseconds : result.castFrameMilliseconds) = median(std::move(totals));
+    (rule == passes::RayCastRule::Never ? result.searchedFrameMilliseconds : result.castFrameMilliseconds) =
+        median(std::move(totals));
   }
   renderer.resetCoherence();
   return {};
@@ -169,7 +178,8 @@ double rasterFloor(render::Renderer& renderer, const scene::ScenePose& pose, con
 }
 
 // The tessellation of the scene's patches at `pose` from farther and farther along the line of sight.
-Result<std::vector<SceneBenchResult::PatchTessellation>> patchTessellation(render::Renderer& renderer, scene::ScenePose pose,
+Result<std::vector<SceneBenchResult::PatchTessellation>> patchTessellation(render::Renderer& renderer,
+                                                                           scene::ScenePose pose,
                                                                            const BenchOptions& options) {
   std::vector<SceneBenchResult::PatchTessellation> rows;
   const math::Camera camera = pose.camera;
@@ -214,7 +224,8 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   scene::ScenePose pose = poseAt(0);
   auto cold = r.render(pose, options.width, options.height, settings);
   if (!cold) return Error{cold.error()};
-  result.firstFrameMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  result.firstFrameMilliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   StepAccumulator coldSteps;
   coldSteps.add(cold->search);
   result.coldSteps = coldSteps.result();
@@ -261,8 +272,10 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
     result.castTiles.possible += part.castTiles.possible;
   }
   if (measurePoints && !pointErrors.pixels.empty()) {  // none where every mirror was ray-cast
-    result.pointError = SceneBenchResult::PointError{pointErrors.pixels.size(), pointErrors.mean(),
-                                                     pointErrors.percentile(0.99), pointErrors.percentile(1.0),
+    result.pointError = SceneBenchResult::PointError{pointErrors.pixels.size(),
+                                                     pointErrors.mean(),
+                                                     pointErrors.percentile(0.99),
+                                                     pointErrors.percentile(1.0),
                                                      pointErrors.searchHiddenButExactVisible,
                                                      pointErrors.exactHiddenButSearchVisible};
   }
@@ -284,7 +297,6 @@ Result<SceneBenchResult> benchmarkScene(gl::GlContext& context, std::shared_ptr<
   if (!searches) return Error{searches.error()};
   result.searches = std::move(*searches);
   if (Status status = compareMethods(r, options, result); !status) return Error{status.error()};
-
 
   if (options.coldWidth > 0 && options.coldHeight > 0) {
     passes::ReflectionSettings coldStart = settings;

@@ -20,21 +20,21 @@ namespace specula::bench {
 
 struct BenchOptions {
   int width = 640, height = 480;
-  int frames = 60;                 // warm frames along the animation, after a cold one
-  double framesPerSecond = 60.0;   // animation time between frames: 1 / framesPerSecond
-  int coldWidth = 1280, coldHeight = 720;  // the extra cold-start frame (0 skips it)
-  bool reference = true;           // compare with the ray tracer (CPU; the slowest part)
+  int frames = 60;                              // warm frames along the animation, after a cold one
+  double framesPerSecond = 60.0;                // animation time between frames: 1 / framesPerSecond
+  int coldWidth = 1280, coldHeight = 720;       // the extra cold-start frame (0 skips it)
+  bool reference = true;                        // compare with the ray tracer (CPU; the slowest part)
   int stillSamples = math::kStillFrameSamples;  // the image comparison's anti-aliasing, both sides
-  passes::ReflectionSettings reflection;  // defaults but for the plan options (the planner off, for comparison)
+  passes::ReflectionSettings reflection;        // defaults but for the plan options (the planner off, for comparison)
   // Per pass by default (the per-pass columns); FrameOnly times whole frames as served, with no
   // wait between passes (on llvmpipe a glFinish after each pass keeps the rasterizer from overlapping them).
   render::PassTiming passTiming = render::PassTiming::PerPass;
 };
 
 struct StepStatistics {
-  double mean = 0.0;       // 3×3 windows per searched vertex
+  double mean = 0.0;  // 3×3 windows per searched vertex
   unsigned maximum = 0;
-  unsigned searched = 0;   // vertices searched in the frames measured
+  unsigned searched = 0;  // vertices searched in the frames measured
 };
 
 struct SceneBenchResult {
@@ -42,16 +42,16 @@ struct SceneBenchResult {
   std::size_t vertices = 0, triangles = 0, mirrors = 0;
   int width = 0, height = 0, frames = 0;
 
-  double firstFrameMilliseconds = 0.0;    // wall time of the very first frame: shader compilation included
+  double firstFrameMilliseconds = 0.0;            // wall time of the very first frame: shader compilation included
   std::vector<render::StageTiming> stageMedians;  // per pass over the warm frames (0 where a pass did not run)
-  double frameMedianMilliseconds = 0.0;   // whole frame, wall clock, median over the warm frames
+  double frameMedianMilliseconds = 0.0;           // whole frame, wall clock, median over the warm frames
   double framesPerSecond() const { return frameMedianMilliseconds > 0.0 ? 1000.0 / frameMedianMilliseconds : 0.0; }
   // The last pose drawn with no reflection (`--method none`), median over a few frames: the scene's
   // own raster, a floor that no reflection method on this GL can go below.
   double rasterFloorMilliseconds = 0.0;
 
-  StepStatistics warmSteps;     // along the animation with frame-to-frame coherence
-  StepStatistics coldSteps;     // the first frame: every vertex from the pyramid
+  StepStatistics warmSteps;                      // along the animation with frame-to-frame coherence
+  StepStatistics coldSteps;                      // the first frame: every vertex from the pyramid
   std::optional<StepStatistics> coldStepsLarge;  // cold at BenchOptions::coldWidth × coldHeight
   unsigned searchedPerFrame = 0, hiddenPerFrame = 0, unsolvedPerFrame = 0;  // the last frame's
   // The last frame's plan: visible mirror parts, those ray-cast, and reflected vertices left out.
@@ -67,8 +67,8 @@ struct SceneBenchResult {
   }
   std::size_t plannedParts = 0, rayCastParts = 0, culledVertices = 0;
   std::size_t belowBudgetVertices = 0;  // last frame: of objects whose image is under the error budget
-  std::size_t uncoveredRayCast = 0;  // last frame: pixels no virtual object covered, ray-cast instead
-  passes::CastTileCount castTiles;   // last frame, all ray-cast parts: object tiles cast on, of possible
+  std::size_t uncoveredRayCast = 0;     // last frame: pixels no virtual object covered, ray-cast instead
+  passes::CastTileCount castTiles;      // last frame, all ray-cast parts: object tiles cast on, of possible
 
   // Each search strategy over the first frames of the same animation, the cold first frame left out:
   // its search stages' time (the pyramid or ray hierarchy, and the search) and its steps (3×3 windows,
@@ -93,8 +93,8 @@ struct SceneBenchResult {
   // The last frame against the ray-traced reference at the same pose; absent when not asked for.
   struct ReferenceComparison {
     double psnr = 0.0, ssim = 0.0;  // PSNR in dB, at most 100 (identical images)
-    double mirrorMismatch = 0.0;  // share of mirror pixels that differ strongly
-    int samples = 1;              // the images compared took this many samples a pixel (BenchOptions::stillSamples)
+    double mirrorMismatch = 0.0;    // share of mirror pixels that differ strongly
+    int samples = 1;                // the images compared took this many samples a pixel (BenchOptions::stillSamples)
     double rayTraceMilliseconds = 0.0;       // one ray a pixel, as the warm frames' one sample
     double stillRayTraceMilliseconds = 0.0;  // `samples` rays a pixel, the image compared
   };

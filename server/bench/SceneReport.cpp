@@ -41,7 +41,8 @@ ReportRow sceneRow(const SceneBenchResult& r, std::span<const std::string> stage
       {"fps", number(r.framesPerSecond(), 1)},
       {"raster_floor_ms", number(r.rasterFloorMilliseconds, 2)},
   };
-  for (const std::string& stage : stages) cells.push_back({stage + "_ms", optionalNumber(stageMilliseconds(r, stage), 3)});
+  for (const std::string& stage : stages)
+    cells.push_back({stage + "_ms", optionalNumber(stageMilliseconds(r, stage), 3)});
   cells.push_back({"steps_warm_mean", number(r.warmSteps.mean, 2)});
   cells.push_back({"steps_warm_max", std::to_string(r.warmSteps.maximum)});
   cells.push_back({"steps_cold_mean", number(r.coldSteps.mean, 2)});
@@ -59,7 +60,8 @@ ReportRow sceneRow(const SceneBenchResult& r, std::span<const std::string> stage
   const auto& planner = r.planner;
   cells.push_back({"planner_rate_search", planner ? number(planner->rates.search, 3) : ""});
   cells.push_back({"planner_rate_cast", planner ? number(planner->rates.rayCast, 3) : ""});
-  cells.push_back({"planner_predicted_ms", planner ? number(planner->predicted.search + planner->predicted.rayCast, 2) : ""});
+  cells.push_back(
+      {"planner_predicted_ms", planner ? number(planner->predicted.search + planner->predicted.rayCast, 2) : ""});
   cells.push_back({"planner_took_ms", planner ? number(planner->took.search + planner->took.rayCast, 2) : ""});
   cells.push_back({"culled_vertices", std::to_string(r.culledVertices)});
   cells.push_back({"below_budget_vertices", std::to_string(r.belowBudgetVertices)});
@@ -69,15 +71,18 @@ ReportRow sceneRow(const SceneBenchResult& r, std::span<const std::string> stage
   for (const passes::SearchStrategy strategy : passes::kSearchStrategies) {
     std::string name = passes::searchStrategyName(strategy);
     std::replace(name.begin(), name.end(), '-', '_');  // explosion_map_*: column names are identifiers
-    const auto measured = std::find_if(r.searches.begin(), r.searches.end(), [&](const auto& s) { return s.strategy == strategy; });
+    const auto measured =
+        std::find_if(r.searches.begin(), r.searches.end(), [&](const auto& s) { return s.strategy == strategy; });
     const bool has = measured != r.searches.end();
     cells.push_back({name + "_search_ms", has ? number(measured->milliseconds, 3) : ""});
     cells.push_back({name + "_steps_mean", has ? number(measured->steps.mean, 2) : ""});
     cells.push_back({name + "_steps_max", has ? std::to_string(measured->steps.maximum) : ""});
   }
   for (const int samples : SceneBenchResult::kStillSampleCounts) {
-    const auto row = std::find_if(r.stillFrames.begin(), r.stillFrames.end(), [&](const auto& s) { return s.samples == samples; });
-    cells.push_back({"still_ms_" + std::to_string(samples) + "_samples", row != r.stillFrames.end() ? number(row->milliseconds, 1) : ""});
+    const auto row =
+        std::find_if(r.stillFrames.begin(), r.stillFrames.end(), [&](const auto& s) { return s.samples == samples; });
+    cells.push_back({"still_ms_" + std::to_string(samples) + "_samples",
+                     row != r.stillFrames.end() ? number(row->milliseconds, 1) : ""});
   }
   const auto& e = r.pointError;
   cells.push_back({"point_error_count", e ? std::to_string(e->count) : ""});
@@ -127,60 +132,71 @@ std::string formatJson(std::span<const SceneBenchResult> results) {
 std::string formatTable(std::span<const SceneBenchResult> results) {
   std::string table;
   char line[512];
-  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", "scene", "frame ms", "fps",
-                "first", "floor", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch", "trace ms", "x trace");
+  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", "scene", "frame ms",
+                "fps", "first", "floor", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch",
+                "trace ms", "x trace");
   table += line;
   for (const SceneBenchResult& r : results) {
     const auto& e = r.pointError;
     const auto& c = r.reference;
     const std::string steps = number(r.warmSteps.mean, 1) + "/" + number(r.coldSteps.mean, 1) + "/" +
                               orDash(r.coldStepsLarge ? number(r.coldStepsLarge->mean, 1) : "");
-    const std::string error = e ? significant(e->mean) + "/" + significant(e->p99) + "/" + significant(e->maximum) : "-";
-    const std::string image = c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
+    const std::string error =
+        e ? significant(e->mean) + "/" + significant(e->p99) + "/" + significant(e->maximum) : "-";
+    const std::string image =
+        c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
     std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", r.scene.c_str(),
                   number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
-                  number(r.firstFrameMilliseconds, 0).c_str(), number(r.rasterFloorMilliseconds, 1).c_str(), steps.c_str(), error.c_str(), image.c_str(),
+                  number(r.firstFrameMilliseconds, 0).c_str(), number(r.rasterFloorMilliseconds, 1).c_str(),
+                  steps.c_str(), error.c_str(), image.c_str(),
                   orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str(),
                   orDash(optionalNumber(r.timeVersusRayTrace(), 2)).c_str());
     table += line;
     std::string passes = "  passes (median ms):";
-    for (const render::StageTiming& stage : r.stageMedians) passes += " " + stage.name + " " + number(stage.milliseconds, 2);
+    for (const render::StageTiming& stage : r.stageMedians)
+      passes += " " + stage.name + " " + number(stage.milliseconds, 2);
     table += passes + "\n";
-    table += "  plan (last frame): " + std::to_string(r.plannedParts) + " mirror parts, " + std::to_string(r.rayCastParts) +
-             " ray-cast, " + std::to_string(r.culledVertices) + " reflected vertices left out, " +
-             std::to_string(r.belowBudgetVertices) + " under the error budget, " + std::to_string(r.uncoveredRayCast) +
-             " uncovered pixels ray-cast, cast on " + std::to_string(r.castTiles.listed) + " of " +
-             std::to_string(r.castTiles.possible) + " object tiles\n";
+    table += "  plan (last frame): " + std::to_string(r.plannedParts) + " mirror parts, " +
+             std::to_string(r.rayCastParts) + " ray-cast, " + std::to_string(r.culledVertices) +
+             " reflected vertices left out, " + std::to_string(r.belowBudgetVertices) + " under the error budget, " +
+             std::to_string(r.uncoveredRayCast) + " uncovered pixels ray-cast, cast on " +
+             std::to_string(r.castTiles.listed) + " of " + std::to_string(r.castTiles.possible) + " object tiles\n";
     if (r.searchedOverCast())
-      table += "  searched / cast at " + std::to_string(r.width) + "x" + std::to_string(r.height) + ": " + number(*r.searchedOverCast(), 2) + " (every part searched " + number(*r.searchedFrameMilliseconds, 1) +
-               " ms a frame, every part cast " + number(*r.castFrameMilliseconds, 1) + " ms; medians of 10 warm frames)\n";
+      table += "  searched / cast at " + std::to_string(r.width) + "x" + std::to_string(r.height) + ": " +
+               number(*r.searchedOverCast(), 2) + " (every part searched " + number(*r.searchedFrameMilliseconds, 1) +
+               " ms a frame, every part cast " + number(*r.castFrameMilliseconds, 1) +
+               " ms; medians of 10 warm frames)\n";
     if (r.planner) {
       const auto& p = *r.planner;
       table += "  planner (last measured frame): searching predicted " + number(p.predicted.search, 1) + " ms, took " +
                number(p.took.search, 1) + "; ray-casting predicted " + number(p.predicted.rayCast, 1) + " ms, took " +
-               number(p.took.rayCast, 1) + "; rates measured here over the llvmpipe fit: searching " + number(p.rates.search, 2) +
-               ", ray-casting " + number(p.rates.rayCast, 2) + "\n";
+               number(p.took.rayCast, 1) + "; rates measured here over the llvmpipe fit: searching " +
+               number(p.rates.search, 2) + ", ray-casting " + number(p.rates.rayCast, 2) + "\n";
     }
     if (!r.stillFrames.empty()) {
       std::string still = "  still frames (last pose, samples a pixel: ms):";
-      for (const SceneBenchResult::StillFrame& s : r.stillFrames) still += " " + std::to_string(s.samples) + ": " + number(s.milliseconds, 1) + ";";
-      if (c) still += " images compared at " + std::to_string(c->samples) + " samples with a " + std::to_string(c->samples) + "-ray trace (" + number(c->stillRayTraceMilliseconds, 0) + " ms);";
+      for (const SceneBenchResult::StillFrame& s : r.stillFrames)
+        still += " " + std::to_string(s.samples) + ": " + number(s.milliseconds, 1) + ";";
+      if (c)
+        still += " images compared at " + std::to_string(c->samples) + " samples with a " + std::to_string(c->samples) +
+                 "-ray trace (" + number(c->stillRayTraceMilliseconds, 0) + " ms);";
       still.back() = '\n';
       table += still;
     }
     if (!r.patchTessellation.empty()) {
       std::string patches = "  patch tessellation (last pose, camera distance ×):";
       for (const SceneBenchResult::PatchTessellation& t : r.patchTessellation)
-        patches += " " + std::to_string(t.distanceFactor) + ": " + std::to_string(t.triangles) + " triangles, pixel area " +
-                   number(t.areaP10, 1) + "/" + number(t.areaP50, 1) + "/" + number(t.areaP90, 1) + ";";
+        patches += " " + std::to_string(t.distanceFactor) + ": " + std::to_string(t.triangles) +
+                   " triangles, pixel area " + number(t.areaP10, 1) + "/" + number(t.areaP50, 1) + "/" +
+                   number(t.areaP90, 1) + ";";
       patches.back() = '\n';
       table += patches;
     }
     if (r.searches.empty()) continue;
     std::string searches = "  searches (first frames, warm):";
     for (const SceneBenchResult::SearchComparison& s : r.searches) {
-      searches += std::string(" ") + passes::searchStrategyName(s.strategy) + " " + number(s.milliseconds, 2) + " ms, " +
-                  number(s.steps.mean, 1) + " steps (max " + std::to_string(s.steps.maximum) + ")";
+      searches += std::string(" ") + passes::searchStrategyName(s.strategy) + " " + number(s.milliseconds, 2) +
+                  " ms, " + number(s.steps.mean, 1) + " steps (max " + std::to_string(s.steps.maximum) + ")";
       if (s.strategy == passes::SearchStrategy::Hierarchy)
         searches += ", " + std::to_string(s.enlarged) + " enlarged, " + std::to_string(s.inNoCone) + " in no cone";
       searches += ";";

@@ -21,7 +21,9 @@ std::uint32_t virtualTrianglesDrawn(const render::Renderer& renderer, const rend
   if (!frame.tessellation.trianglesPerRound.empty()) return frame.tessellation.finishedTriangles;
   std::size_t triangles = 0;
   for (const passes::MirrorSlots& mirror : renderer.reflectionSlots().mirrors) {
-    if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror.mirrorObject) == frame.drawnMirrors.end()) continue;
+    if (std::find(frame.drawnMirrors.begin(), frame.drawnMirrors.end(), mirror.mirrorObject) ==
+        frame.drawnMirrors.end())
+      continue;
     for (const passes::ReflectionSlotRange& range : mirror.reflected)
       triangles += renderer.scene().meshes[renderer.scene().objects[range.object].mesh].triangleCount();
   }
@@ -32,7 +34,8 @@ std::vector<passes::TessellationSettings> tessellationSweep() {
   using passes::TessellationMetric;
   using passes::TessellationMode;
   std::vector<passes::TessellationSettings> sweep = {{TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0}};
-  for (int level = 1; level <= 5; ++level) sweep.push_back({TessellationMode::CrackFree, TessellationMetric::Angle, 0.0f, level});
+  for (int level = 1; level <= 5; ++level)
+    sweep.push_back({TessellationMode::CrackFree, TessellationMetric::Angle, 0.0f, level});
   for (float threshold : {0.1f, 0.03f, 0.01f, 0.003f, 0.001f})
     sweep.push_back({TessellationMode::CrackFree, TessellationMetric::Angle, threshold, kAdaptiveLevel});
   for (float threshold : {2.0f, 1.0f, 0.5f, 0.25f, 0.1f})

@@ -17,18 +17,18 @@ namespace specula::bench {
 
 struct TessellationBenchOptions {
   int width = 640, height = 480;
-  int frames = 5;       // timed frames per setting, after one warm-up frame
-  double time = 0.0;    // scene time of the pose measured
+  int frames = 5;     // timed frames per setting, after one warm-up frame
+  double time = 0.0;  // scene time of the pose measured
 };
 
 struct TessellationBenchRow {
   std::string scene, setting;  // as passes::describeTessellation names it
   passes::TessellationSettings tessellation;
-  std::uint32_t triangles = 0;         // virtual triangles drawn (the reflected ones when untessellated)
+  std::uint32_t triangles = 0;  // virtual triangles drawn (the reflected ones when untessellated)
   std::uint32_t vertices() const { return 3 * triangles; }  // tessellated lists are triangle soups
-  std::uint32_t searches = 0;          // reflection searches: scene vertices plus new edge midpoints
+  std::uint32_t searches = 0;  // reflection searches: scene vertices plus new edge midpoints
   std::uint32_t midpointSearches = 0;
-  bool capped = false;                 // the triangle cap stopped splitting
+  bool capped = false;                                             // the triangle cap stopped splitting
   double frameMilliseconds = 0.0, tessellationMilliseconds = 0.0;  // medians over the timed frames
   double psnr = 0.0, ssim = 0.0, mirrorMismatch = 0.0;             // against the ray tracer
 };

@@ -90,9 +90,7 @@ class EglPlatform final : public GlPlatform {
   }
 
   PlatformKind kind() const override { return kind_; }
-  void* procAddress(const char* name) const override {
-    return reinterpret_cast<void*>(egl_.GetProcAddress(name));
-  }
+  void* procAddress(const char* name) const override { return reinterpret_cast<void*>(egl_.GetProcAddress(name)); }
   Status makeCurrent() override {
     if (!egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       return Error{"eglMakeCurrent failed: " + eglErrorText(egl_.GetError())};
@@ -102,7 +100,8 @@ class EglPlatform final : public GlPlatform {
   // Initializes the display and creates a surfaceless GL core context on it.
   Status createContext() {
     EGLint major = 0, minor = 0;
-    if (!egl_.Initialize(display_, &major, &minor)) return Error{"eglInitialize failed: " + eglErrorText(egl_.GetError())};
+    if (!egl_.Initialize(display_, &major, &minor))
+      return Error{"eglInitialize failed: " + eglErrorText(egl_.GetError())};
     if (!hasExtension(egl_.QueryString(display_, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
       return Error{"the EGL display lacks EGL_KHR_surfaceless_context"};
     if (!egl_.BindAPI(EGL_OPENGL_API)) return Error{"eglBindAPI(EGL_OPENGL_API) failed: desktop GL not offered"};
@@ -112,9 +111,14 @@ class EglPlatform final : public GlPlatform {
     EGLint configCount = 0;
     if (!egl_.ChooseConfig(display_, configAttributes, &config, 1, &configCount) || configCount < 1)
       return Error{"no EGL config supports desktop OpenGL"};
-    const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, kGlMajor, EGL_CONTEXT_MINOR_VERSION, kGlMinor,
-                                        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                        EGL_CONTEXT_OPENGL_DEBUG, glDebugOutputRequested() ? EGL_TRUE : EGL_FALSE,
+    const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                        kGlMajor,
+                                        EGL_CONTEXT_MINOR_VERSION,
+                                        kGlMinor,
+                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                        EGL_CONTEXT_OPENGL_DEBUG,
+                                        glDebugOutputRequested() ? EGL_TRUE : EGL_FALSE,
                                         EGL_NONE};
     context_ = egl_.CreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
     if (context_ == EGL_NO_CONTEXT)

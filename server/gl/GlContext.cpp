@@ -31,7 +31,7 @@ std::string glString(const GlApi& gl, GLenum name) {
 // Prints each driver message once per (source, type, id), then stays quiet: a per-draw warning
 // would otherwise flood the log every frame.
 void APIENTRY printDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
-                                  const void*) {
+                                const void*) {
   static constexpr std::size_t kRemembered = 256;
   static std::array<std::array<GLuint, 3>, kRemembered> seen{};
   static std::size_t seenCount = 0;
@@ -39,7 +39,8 @@ void APIENTRY printDebugMessage(GLenum source, GLenum type, GLuint id, GLenum se
   for (std::size_t i = 0; i < seenCount; ++i)
     if (seen[i] == key) return;
   if (seenCount < kRemembered) seen[seenCount++] = key;
-  std::fprintf(stderr, "GL debug (source 0x%X, type 0x%X, id %u, severity 0x%X): %s\n", source, type, id, severity, message);
+  std::fprintf(stderr, "GL debug (source 0x%X, type 0x%X, id %u, severity 0x%X): %s\n", source, type, id, severity,
+               message);
 }
 
 }  // namespace
@@ -100,7 +101,8 @@ Status GlContext::initialize() {
   api_.GetIntegerv(GL_MINOR_VERSION, &minor);
   if (major * 10 + minor < 43) return Error{"GL " + info_.version + " is older than the 4.3 core profile needed"};
   if (glDebugOutputRequested()) {
-    const auto callback = reinterpret_cast<PFNGLDEBUGMESSAGECALLBACKPROC>(platform_->procAddress("glDebugMessageCallback"));
+    const auto callback =
+        reinterpret_cast<PFNGLDEBUGMESSAGECALLBACKPROC>(platform_->procAddress("glDebugMessageCallback"));
     if (!callback) return Error{"SPECULA_GL_DEBUG is set but the driver lacks glDebugMessageCallback"};
     api_.Enable(GL_DEBUG_OUTPUT);
     api_.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // messages arrive on the calling thread, next to their call
@@ -108,8 +110,9 @@ Status GlContext::initialize() {
     GLint flags = 0;
     api_.GetIntegerv(GL_CONTEXT_FLAGS, &flags);
     std::fprintf(stderr, "GL debug output on (SPECULA_GL_DEBUG)%s\n",
-                 (flags & GL_CONTEXT_FLAG_DEBUG_BIT) ? ""
-                                                     : ", but the platform gave no debug context: the driver may stay silent");
+                 (flags & GL_CONTEXT_FLAG_DEBUG_BIT)
+                     ? ""
+                     : ", but the platform gave no debug context: the driver may stay silent");
   }
   return {};
 }

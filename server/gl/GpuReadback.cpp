@@ -30,7 +30,8 @@ void GpuReadback::begin() {
 }
 
 std::size_t GpuReadback::copy(GLuint buffer, std::size_t bytes, std::size_t offset) {
-  const std::size_t staged = copies_.empty() ? 0 : (copies_.back().staged + copies_.back().bytes + kAlignment - 1) / kAlignment * kAlignment;
+  const std::size_t staged =
+      copies_.empty() ? 0 : (copies_.back().staged + copies_.back().bytes + kAlignment - 1) / kAlignment * kAlignment;
   copies_.push_back({buffer, offset, bytes, staged});
   return copies_.size() - 1;
 }
@@ -48,7 +49,8 @@ void GpuReadback::fence() {
     staging_ = GlBuffer(gl);
     gl.BindBuffer(GL_COPY_READ_BUFFER, staging_.id());
     gl.BufferStorage(GL_COPY_READ_BUFFER, static_cast<GLsizeiptr>(capacity_), nullptr, kMapping);
-    mapped_ = static_cast<const unsigned char*>(gl.MapBufferRange(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(capacity_), kMapping));
+    mapped_ = static_cast<const unsigned char*>(
+        gl.MapBufferRange(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(capacity_), kMapping));
     gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
   }
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes before the copies read them

@@ -50,8 +50,17 @@ Result<std::unique_ptr<GlPlatform>> createOsMesaPlatform() {
   auto getProc = reinterpret_cast<GetProcAddress>(dlsym(library, "OSMesaGetProcAddress"));
   if (!create || !destroy || !makeCurrent || !getProc)
     return Error{"libOSMesa lacks OSMesaCreateContextAttribs (Mesa ≥ 12 needed)"};
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            4,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            3,
+                            0};
   OSMesaContext context = create(attributes, nullptr);
   if (!context) return Error{"OSMesa could not create a GL 4.3 core context"};
   auto platform = std::make_unique<OsMesaPlatform>(destroy, makeCurrent, getProc, context);

@@ -120,8 +120,7 @@ GLint ShaderProgram::location(const char* name) const {
   std::string_view declared(name);
   declared = declared.substr(0, declared.find_first_of("[."));  // "light[2]" is declared as light
   if (!declaredUniforms_.contains(declared))
-    unknownUniformHandler("uniform \"" + std::string(name) + "\" is declared in none of " + files_ +
-                          " (renamed?)");
+    unknownUniformHandler("uniform \"" + std::string(name) + "\" is declared in none of " + files_ + " (renamed?)");
   return location;
 }
 

@@ -13,7 +13,8 @@ using Points = std::array<glm::dvec3, 4>;
 
 // The blossom of the degree-p curve piece on knot span `span` (points[0..p] are control points
 // span−p … span) at the p arguments `args`: de Boor's algorithm with one argument per level.
-glm::dvec3 blossom(const std::vector<double>& knots, int p, int span, Points points, const std::array<double, 3>& args) {
+glm::dvec3 blossom(const std::vector<double>& knots, int p, int span, Points points,
+                   const std::array<double, 3>& args) {
   for (int r = 1; r <= p; ++r)
     for (int i = p; i >= r; --i) {
       const auto j = static_cast<std::size_t>(span - p + i);
@@ -39,8 +40,9 @@ Points cubicBezierOfSpan(const std::vector<double>& knots, int p, int span, cons
     Points raised{};
     for (int i = 0; i <= n + 1; ++i) {
       const double w = static_cast<double>(i) / (n + 1);
-      raised[static_cast<std::size_t>(i)] = (i > 0 ? w * bezier[static_cast<std::size_t>(i - 1)] : glm::dvec3(0.0)) +
-                                            (i <= n ? (1.0 - w) * bezier[static_cast<std::size_t>(i)] : glm::dvec3(0.0));
+      raised[static_cast<std::size_t>(i)] =
+          (i > 0 ? w * bezier[static_cast<std::size_t>(i - 1)] : glm::dvec3(0.0)) +
+          (i <= n ? (1.0 - w) * bezier[static_cast<std::size_t>(i)] : glm::dvec3(0.0));
     }
     bezier = raised;
   }
@@ -51,7 +53,8 @@ std::optional<std::string> knotProblem(const std::vector<double>& knots, int deg
   const std::size_t expected = static_cast<std::size_t>(count + degree + 1);
   if (knots.size() != expected)
     return std::string(name) + " has " + std::to_string(knots.size()) + " knots; " + std::to_string(count) +
-           " control points of degree " + std::to_string(degree) + " need count + degree + 1 = " + std::to_string(expected);
+           " control points of degree " + std::to_string(degree) +
+           " need count + degree + 1 = " + std::to_string(expected);
   for (std::size_t i = 0; i < knots.size(); ++i) {
     if (!std::isfinite(knots[i])) return std::string(name) + "[" + std::to_string(i) + "] is not a finite number";
     if (i > 0 && knots[i] < knots[i - 1])
@@ -64,7 +67,8 @@ std::optional<std::string> knotProblem(const std::vector<double>& knots, int deg
 
 int nonEmptySpans(const std::vector<double>& knots, int degree, int count) {
   int spans = 0;
-  for (int s = degree; s < count; ++s) spans += knots[static_cast<std::size_t>(s)] < knots[static_cast<std::size_t>(s + 1)];
+  for (int s = degree; s < count; ++s)
+    spans += knots[static_cast<std::size_t>(s)] < knots[static_cast<std::size_t>(s + 1)];
   return spans;
 }
 
@@ -77,20 +81,21 @@ std::optional<std::string> bsplineProblem(const BSplineSurface& surface) {
     if (degree < 1 || degree > BSplineSurface::kMaxDegree)
       return std::string("degree along ") + name + " is " + std::to_string(degree) + "; use 1, 2 or 3";
     if (count < degree + 1 || count > 4096)
-      return std::string("count along ") + name + " is " + std::to_string(count) + "; degree " + std::to_string(degree) +
-             " needs from " + std::to_string(degree + 1) + " to 4096 control points";
+      return std::string("count along ") + name + " is " + std::to_string(count) + "; degree " +
+             std::to_string(degree) + " needs from " + std::to_string(degree + 1) + " to 4096 control points";
   }
   const std::size_t points = static_cast<std::size_t>(surface.count.x) * static_cast<std::size_t>(surface.count.y);
   if (surface.controlNet.size() != points)
     return "the control net has " + std::to_string(surface.controlNet.size()) + " points; count " +
-           std::to_string(surface.count.x) + " x " + std::to_string(surface.count.y) + " needs " + std::to_string(points);
+           std::to_string(surface.count.x) + " x " + std::to_string(surface.count.y) + " needs " +
+           std::to_string(points);
   for (std::size_t i = 0; i < surface.controlNet.size(); ++i)
-    if (!finite(surface.controlNet[i]))
-      return "control point " + std::to_string(i) + " is not finite";
+    if (!finite(surface.controlNet[i])) return "control point " + std::to_string(i) + " is not finite";
   if (auto problem = knotProblem(surface.knotsU, surface.degree.x, surface.count.x, "knots along u")) return problem;
   if (auto problem = knotProblem(surface.knotsV, surface.degree.y, surface.count.y, "knots along v")) return problem;
-  const std::size_t patches = static_cast<std::size_t>(nonEmptySpans(surface.knotsU, surface.degree.x, surface.count.x)) *
-                              static_cast<std::size_t>(nonEmptySpans(surface.knotsV, surface.degree.y, surface.count.y));
+  const std::size_t patches =
+      static_cast<std::size_t>(nonEmptySpans(surface.knotsU, surface.degree.x, surface.count.x)) *
+      static_cast<std::size_t>(nonEmptySpans(surface.knotsV, surface.degree.y, surface.count.y));
   if (patches > BSplineSurface::kMaxPatches)
     return "the surface has " + std::to_string(patches) + " knot spans, more than the " +
            std::to_string(BSplineSurface::kMaxPatches) + " patches a surface may have; use fewer control points";

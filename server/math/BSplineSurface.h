@@ -11,10 +11,10 @@
 namespace specula::math {
 
 struct BSplineSurface {
-  glm::ivec2 degree{3, 3};               // along u, along v; 1, 2 or 3 each
-  glm::ivec2 count{4, 4};                // control points along u (a row) and along v (rows)
-  std::vector<double> knotsU, knotsV;    // count + degree + 1 each, non-decreasing
-  std::vector<glm::dvec3> controlNet;    // count.y rows of count.x points, row-major
+  glm::ivec2 degree{3, 3};             // along u, along v; 1, 2 or 3 each
+  glm::ivec2 count{4, 4};              // control points along u (a row) and along v (rows)
+  std::vector<double> knotsU, knotsV;  // count + degree + 1 each, non-decreasing
+  std::vector<glm::dvec3> controlNet;  // count.y rows of count.x points, row-major
 
   static constexpr int kMaxDegree = 3;
   static constexpr std::size_t kMaxPatches = 4096;

@@ -86,14 +86,16 @@ BezierPatch BezierPatch::restricted(double u0, double u1, double v0, double v1) 
   BezierPatch rowsDone;
   for (int row = 0; row < 4; ++row) {
     const auto c = restrictCubic({point(row, 0), point(row, 1), point(row, 2), point(row, 3)}, u0, u1);
-    for (int column = 0; column < 4; ++column) rowsDone.points[static_cast<std::size_t>(4 * row + column)] = c[static_cast<std::size_t>(column)];
+    for (int column = 0; column < 4; ++column)
+      rowsDone.points[static_cast<std::size_t>(4 * row + column)] = c[static_cast<std::size_t>(column)];
   }
   BezierPatch out;
   for (int column = 0; column < 4; ++column) {
-    const auto c = restrictCubic({rowsDone.point(0, column), rowsDone.point(1, column), rowsDone.point(2, column),
-                                  rowsDone.point(3, column)},
-                                 v0, v1);
-    for (int row = 0; row < 4; ++row) out.points[static_cast<std::size_t>(4 * row + column)] = c[static_cast<std::size_t>(row)];
+    const auto c = restrictCubic(
+        {rowsDone.point(0, column), rowsDone.point(1, column), rowsDone.point(2, column), rowsDone.point(3, column)},
+        v0, v1);
+    for (int row = 0; row < 4; ++row)
+      out.points[static_cast<std::size_t>(4 * row + column)] = c[static_cast<std::size_t>(row)];
   }
   return out;
 }
@@ -107,8 +109,8 @@ std::pair<glm::dvec3, glm::dvec3> BezierPatch::controlBounds() const {
   return {low, high};
 }
 
-std::optional<PatchRayHit> intersectPatch(const BezierPatch& patch, const glm::dvec3& origin, const glm::dvec3& direction,
-                                          double tMin, double tMax) {
+std::optional<PatchRayHit> intersectPatch(const BezierPatch& patch, const glm::dvec3& origin,
+                                          const glm::dvec3& direction, double tMin, double tMax) {
   const auto [low, high] = patch.controlBounds();
   const double size = std::max(glm::length(high - low), 1e-300);
   const double slack = 1e-9;  // in u and v: a ray through a shared edge must hit one of its two patches
@@ -136,7 +138,8 @@ std::optional<PatchRayHit> intersectPatch(const BezierPatch& patch, const glm::d
   };
   if (auto hit = newton({0.5, 0.5})) return hit;
   std::optional<PatchRayHit> nearest;
-  for (const glm::dvec2 start : {glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25), glm::dvec2(0.25, 0.75), glm::dvec2(0.75, 0.75)})
+  for (const glm::dvec2 start :
+       {glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25), glm::dvec2(0.25, 0.75), glm::dvec2(0.75, 0.75)})
     if (auto hit = newton(start); hit && (!nearest || hit->t < nearest->t)) nearest = hit;
   return nearest;
 }

@@ -40,8 +40,8 @@ struct PatchRayHit {
 // from the patch's centre (and, should that fail to converge inside, from its four quarter points).
 // Meant for small, nearly flat patches (BezierPatch::restricted pieces), where the root is unique;
 // nullopt when none converges inside the patch.
-std::optional<PatchRayHit> intersectPatch(const BezierPatch& patch, const glm::dvec3& origin, const glm::dvec3& direction,
-                                          double tMin, double tMax);
+std::optional<PatchRayHit> intersectPatch(const BezierPatch& patch, const glm::dvec3& origin,
+                                          const glm::dvec3& direction, double tMin, double tMax);
 
 // The patch every triangle of tessellatePatchGrid's layout belongs to, and the grid itself: each
 // patch becomes an (n + 1)² vertex grid of exact samples (uv = (u, v) on its patch) and 2n² triangles,

@@ -16,7 +16,8 @@ Extrusion Extrusion::along(const glm::dvec3& axisPoint, const glm::dvec3& direct
   Extrusion extrusion;
   extrusion.axisPoint = axisPoint;
   extrusion.direction = glm::normalize(direction);
-  const glm::dvec3 reference = std::abs(extrusion.direction.x) > 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
+  const glm::dvec3 reference =
+      std::abs(extrusion.direction.x) > 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
   extrusion.u = glm::normalize(reference - glm::dot(reference, extrusion.direction) * extrusion.direction);
   extrusion.v = glm::cross(extrusion.u, extrusion.direction);
   extrusion.radii = radii;
@@ -56,7 +57,7 @@ glm::dvec3 Extrusion::normalAt(double t) const {
 }
 
 std::optional<SurfacePoint> extrusionReflectionPoint(const Extrusion& extrusion, const glm::dvec3& eye,
-                                                    const glm::dvec3& vertex) {
+                                                     const glm::dvec3& vertex) {
   // (1) Project onto the profile's plane: 2-D points in (u, v), heights along the direction.
   const glm::dvec3 eyeOffset = eye - extrusion.axisPoint, vertexOffset = vertex - extrusion.axisPoint;
   const glm::dvec2 eye2(glm::dot(eyeOffset, extrusion.u), glm::dot(eyeOffset, extrusion.v));

@@ -33,7 +33,7 @@ struct Extrusion {
 
 struct SurfacePoint {
   glm::dvec3 position{0.0};
-  glm::dvec3 normal{0.0};  // unit, outwards
+  glm::dvec3 normal{0.0};         // unit, outwards
   double profileParameter = 0.0;  // t of Extrusion::pointAt
 };
 
@@ -41,6 +41,6 @@ struct SurfacePoint {
 // visible from both. nullopt when there is none: the vertex is hidden in the shadow the eye's tangent
 // planes cast behind the extrusion ("region C"), or eye or vertex is inside it or not finite.
 std::optional<SurfacePoint> extrusionReflectionPoint(const Extrusion& extrusion, const glm::dvec3& eye,
-                                                    const glm::dvec3& vertex);
+                                                     const glm::dvec3& vertex);
 
 }  // namespace specula::math

@@ -44,12 +44,11 @@ PatchReflectionSolver::PatchReflectionSolver(std::vector<BezierPatch> patches, i
   samples_.reserve(patches_.size() * static_cast<std::size_t>(side_ * side_));
   for (const BezierPatch& patch : patches_)
     for (int j = 0; j < side_; ++j)
-      for (int i = 0; i < side_; ++i)
-        samples_.push_back(patch.sample((i + 0.5) / side_, (j + 0.5) / side_));
+      for (int i = 0; i < side_; ++i) samples_.push_back(patch.sample((i + 0.5) / side_, (j + 0.5) / side_));
 }
 
 std::optional<PatchPoint> PatchReflectionSolver::refine(std::size_t patch, glm::dvec2 uv, const glm::dvec3& eye,
-                                                       const glm::dvec3& vertex) const {
+                                                        const glm::dvec3& vertex) const {
   const BezierPatch& p = patches_[patch];
   // G(u, v) = (H·Su, H·Sv) vanishes exactly where H ∥ N; its Jacobian by central differences.
   const auto g = [&](const glm::dvec2& at) {
@@ -86,7 +85,7 @@ std::optional<PatchPoint> PatchReflectionSolver::refine(std::size_t patch, glm::
 }
 
 std::optional<PatchPoint> PatchReflectionSolver::solveNear(const glm::dvec3& eye, const glm::dvec3& vertex,
-                                                          const glm::dvec3& near) const {
+                                                           const glm::dvec3& near) const {
   if (!finite(eye) || !finite(vertex) || !finite(near) || samples_.empty()) return std::nullopt;
   // `near` by a seam may lie on the patch next to the one whose sample is nearest: Newton starts
   // on each of the few nearest patches, from the (u, v) nearest `near` (its sample, then projected:
@@ -102,13 +101,15 @@ std::optional<PatchPoint> PatchReflectionSolver::solveNear(const glm::dvec3& eye
     nearestOfPatch.push_back(best);
   }
   const std::size_t tried = std::min(kPatchesTried, nearestOfPatch.size());
-  std::partial_sort(nearestOfPatch.begin(), nearestOfPatch.begin() + static_cast<std::ptrdiff_t>(tried), nearestOfPatch.end());
+  std::partial_sort(nearestOfPatch.begin(), nearestOfPatch.begin() + static_cast<std::ptrdiff_t>(tried),
+                    nearestOfPatch.end());
   std::optional<PatchPoint> found;
   for (std::size_t k = 0; k < tried; ++k) {
     const std::size_t sample = nearestOfPatch[k].second;
     const auto inPatch = static_cast<int>(sample % perPatch);
     const std::size_t patch = sample / perPatch;
-    const glm::dvec2 start = project(patches_[patch], {(inPatch % side_ + 0.5) / side_, (inPatch / side_ + 0.5) / side_}, near);
+    const glm::dvec2 start =
+        project(patches_[patch], {(inPatch % side_ + 0.5) / side_, (inPatch / side_ + 0.5) / side_}, near);
     const auto point = refine(patch, start, eye, vertex);
     if (point && (!found || glm::length(point->position - near) < glm::length(found->position - near))) found = point;
   }

@@ -33,7 +33,8 @@ class PatchReflectionSolver {
   // another method put it.
   std::optional<PatchPoint> solveNear(const glm::dvec3& eye, const glm::dvec3& vertex, const glm::dvec3& near) const;
   // The reflection point Newton's method reaches from (patch, uv), if it converges on that patch.
-  std::optional<PatchPoint> refine(std::size_t patch, glm::dvec2 uv, const glm::dvec3& eye, const glm::dvec3& vertex) const;
+  std::optional<PatchPoint> refine(std::size_t patch, glm::dvec2 uv, const glm::dvec3& eye,
+                                   const glm::dvec3& vertex) const;
 
   const std::vector<BezierPatch>& patches() const { return patches_; }
 

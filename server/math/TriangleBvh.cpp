@@ -74,8 +74,8 @@ TriangleBvh TriangleBvh::build(std::span<const glm::vec3> positions, std::span<c
   return bvh;
 }
 
-std::optional<TriangleBvh::Hit> TriangleBvh::intersect(const glm::vec3& origin, const glm::vec3& direction, float minDistance,
-                                                       float maxDistance) const {
+std::optional<TriangleBvh::Hit> TriangleBvh::intersect(const glm::vec3& origin, const glm::vec3& direction,
+                                                       float minDistance, float maxDistance) const {
   const glm::vec3 inverse = 1.0f / direction;
   std::optional<Hit> best;
   if (nodes_.empty()) return best;

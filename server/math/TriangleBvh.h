@@ -35,9 +35,9 @@ class TriangleBvh {
   static_assert(sizeof(Triangle) == 48, "must match BvhTriangle in triangle-bvh.glsl");
 
   struct Hit {
-    float distance;           // along the (not necessarily unit) direction, in its units
-    std::uint32_t triangle;   // index into the mesh's triangles
-    glm::vec2 barycentric;    // weights of the triangle's second and third corners
+    float distance;          // along the (not necessarily unit) direction, in its units
+    std::uint32_t triangle;  // index into the mesh's triangles
+    glm::vec2 barycentric;   // weights of the triangle's second and third corners
   };
 
   static constexpr int kMaxDepth = 32;  // the GLSL traversal's stack holds this many nodes

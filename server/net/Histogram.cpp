@@ -38,8 +38,8 @@ void Histogram::appendPrometheus(std::string& out, const std::string& name, cons
   out += name + "_sum " + number(sum_) + "\n" + name + "_count " + std::to_string(count_) + "\n";
 }
 
-void appendPrometheusSample(std::string& out, const std::string& name, const std::string& type,
-                            const std::string& help, double value) {
+void appendPrometheusSample(std::string& out, const std::string& name, const std::string& type, const std::string& help,
+                            double value) {
   out += "# HELP " + name + " " + help + "\n# TYPE " + name + " " + type + "\n" + name + " " + number(value) + "\n";
 }
 

@@ -24,7 +24,7 @@ class Histogram {
 };
 
 // One `# HELP`/`# TYPE` block with a single sample (counter or gauge).
-void appendPrometheusSample(std::string& out, const std::string& name, const std::string& type,
-                            const std::string& help, double value);
+void appendPrometheusSample(std::string& out, const std::string& name, const std::string& type, const std::string& help,
+                            double value);
 
 }  // namespace specula::net

@@ -135,8 +135,7 @@ HttpConnection::Response HttpConnection::respond(const http::request<http::empty
                   "this server needs its token: add ?token=SECRET to the URL or send 'Authorization: Bearer SECRET'\n");
   if (path == "/ws") {
     if (!websocket::is_upgrade(request))
-      return answer(http::status::upgrade_required,
-                    "/ws is the WebSocket endpoint: connect with a WebSocket client\n");
+      return answer(http::status::upgrade_required, "/ws is the WebSocket endpoint: connect with a WebSocket client\n");
     return answer(http::status::bad_request,
                   "choose a subprotocol: Sec-WebSocket-Protocol: " +
                       std::string(protocol::subprotocolName(protocol::Encoding::Json)) + " or " +

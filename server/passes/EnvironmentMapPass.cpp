@@ -26,7 +26,8 @@ constexpr std::array<CubeFace, 6> kCubeFaces{{{{1, 0, 0}, {0, -1, 0}},
 // The capture point: the analytic shape's centre when the mirror has one, else its bounds' centre.
 glm::vec3 mirrorCentre(const FrameContext& frame, std::size_t mirrorObject) {
   const scene::MirrorInfo& mirror = *frame.scene.objects[mirrorObject].mirror;
-  if (mirror.analytic) return glm::vec3(frame.pose.objectToWorld[mirrorObject] * glm::vec4(mirror.analytic->center, 1.0f));
+  if (mirror.analytic)
+    return glm::vec3(frame.pose.objectToWorld[mirrorObject] * glm::vec4(mirror.analytic->center, 1.0f));
   return frame.worldBounds[mirrorObject].center();
 }
 
@@ -35,9 +36,11 @@ glm::vec3 mirrorCentre(const FrameContext& frame, std::size_t mirrorObject) {
 Result<std::unique_ptr<EnvironmentMapPass>> EnvironmentMapPass::create(const gl::GlApi& gl) {
   auto capture = gl::ShaderProgram::build(gl, {"scene/scene.vert", "scene/scene.frag"});
   if (!capture) return Error{capture.error()};
-  auto lookup = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "environment-map/environment-map.frag"});
+  auto lookup =
+      gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "environment-map/environment-map.frag"});
   if (!lookup) return Error{lookup.error()};
-  return std::unique_ptr<EnvironmentMapPass>(new EnvironmentMapPass(gl, std::move(capture.value()), std::move(lookup.value())));
+  return std::unique_ptr<EnvironmentMapPass>(
+      new EnvironmentMapPass(gl, std::move(capture.value()), std::move(lookup.value())));
 }
 
 void EnvironmentMapPass::prepare(const gl::GlApi& gl, int faceSize) {
@@ -79,19 +82,21 @@ void EnvironmentMapPass::capture(const FrameContext& frame, std::size_t mirrorOb
   capture_.set("surfaceWeight", 1.0f);  // one bounce: a mirror seen in a mirror shows its own colour
   setSceneLighting(capture_, frame.scene);
   for (std::size_t face = 0; face < kCubeFaces.size(); ++face) {
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
-                            cube_.id(), 0);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                            static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), cube_.id(), 0);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    capture_.set("worldToClip", projection * glm::lookAt(centre, centre + kCubeFaces[face].forward, kCubeFaces[face].up));
+    capture_.set("worldToClip",
+                 projection * glm::lookAt(centre, centre + kCubeFaces[face].forward, kCubeFaces[face].up));
     // What any of the mirror's parts reflects (each part leaves out what it cannot show).
     for (const PlannedMirror& part : frame.plan.mirrors) {
       if (part.slots->mirrorObject != mirrorObject) continue;
       for (const ReflectionSlotRange* range : part.reflected) {
-        const bool drawnForAnEarlierPart = std::any_of(frame.plan.mirrors.data(), &part, [&](const PlannedMirror& earlier) {
-          return earlier.slots->mirrorObject == mirrorObject &&
-                 std::any_of(earlier.reflected.begin(), earlier.reflected.end(),
-                             [&](const ReflectionSlotRange* drawn) { return drawn->object == range->object; });
-        });
+        const bool drawnForAnEarlierPart =
+            std::any_of(frame.plan.mirrors.data(), &part, [&](const PlannedMirror& earlier) {
+              return earlier.slots->mirrorObject == mirrorObject &&
+                     std::any_of(earlier.reflected.begin(), earlier.reflected.end(),
+                                 [&](const ReflectionSlotRange* drawn) { return drawn->object == range->object; });
+            });
         if (drawnForAnEarlierPart) continue;
         const scene::SceneObject& object = frame.scene.objects[range->object];
         capture_.set("objectToWorld", frame.pose.objectToWorld[range->object]);
@@ -107,7 +112,7 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
   const gl::GlApi& gl = frame.gl;
   const ReflectionResources& resources = frame.reflections;
   prepare(gl, frame.settings.environmentMapSize);
-  gl.Disable(GL_CULL_FACE);  // open meshes are seen from both sides
+  gl.Disable(GL_CULL_FACE);                 // open meshes are seen from both sides
   gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // no seams where a lookup straddles two faces
   // The environment-map method serves every mirror; otherwise the planner picked it for some.
   const bool everyMirror = frame.settings.method == ReflectionMethod::EnvironmentMap;

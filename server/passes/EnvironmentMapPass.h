@@ -21,7 +21,11 @@ class EnvironmentMapPass final : public Pass {
 
  private:
   EnvironmentMapPass(const gl::GlApi& gl, gl::ShaderProgram capture, gl::ShaderProgram lookup)
-      : capture_(std::move(capture)), lookup_(std::move(lookup)), cube_(gl), depth_(gl), framebuffer_(gl),
+      : capture_(std::move(capture)),
+        lookup_(std::move(lookup)),
+        cube_(gl),
+        depth_(gl),
+        framebuffer_(gl),
         emptyVertexArray_(gl) {}
   // (Re)allocates the cube map and its depth when the face size changes.
   void prepare(const gl::GlApi& gl, int faceSize);

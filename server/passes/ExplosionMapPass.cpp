@@ -19,7 +19,8 @@ void setExplosionMapFrame(const gl::ShaderProgram& program, const FrameContext& 
   for (int corner = 0; corner < 8; ++corner)
     farRadius = std::max(farRadius, glm::length(glm::vec3((corner & 1) ? scene.high.x : scene.low.x,
                                                           (corner & 2) ? scene.high.y : scene.low.y,
-                                                          (corner & 4) ? scene.high.z : scene.low.z) - centre));
+                                                          (corner & 4) ? scene.high.z : scene.low.z) -
+                                                centre));
   const float nearRadius = part.radius() * kSphereSlack;
   farRadius = std::max(farRadius * kSphereSlack, nearRadius * 2.0f);
   // z towards the eye; x and y any right-handed pair square to it.
@@ -65,7 +66,8 @@ void ExplosionMapPass::execute(const FrameContext& frame) {
     program_.set("objectToWorld", objectToWorld);
     program_.set("normalToWorld", math::normalMatrix(objectToWorld));
     program_.set("part", mirror.partCount > 1 ? mirror.part : -1);
-    if (mirror.partCount > 1) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, resources.triangleParts(mirror.mirrorObject));
+    if (mirror.partCount > 1)
+      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, resources.triangleParts(mirror.mirrorObject));
     for (int map = 0; map < 2; ++map) {  // near, then far
       const int layer = 2 * mirror.layer + map;
       gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.explosionPositions(), 0, layer);

@@ -22,7 +22,7 @@ namespace specula::passes {
 struct FrameView {
   glm::mat4 worldToView{1.0f};
   float fovYDegrees = 45.0f;
-  float aspect = 1.0f;           // width / height
+  float aspect = 1.0f;  // width / height
   float nearDistance = 0.1f, farDistance = 100.0f;
   // Anti-aliased frames: the sample point's offset from the pixel centre, in clip x and y (the whole
   // projection moves with it, so every pass and the G-buffer see the same shifted pixel grid).

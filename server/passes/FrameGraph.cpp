@@ -66,7 +66,7 @@ PassDeclaration declaration(PassId pass, const FrameNeeds& needs) {
     case PassId::Search: return {searchInputs(needs), {R::ReflectedVertices}};
     case PassId::Tessellation: {
       std::vector<R> reads = searchInputs(needs);  // midpoints are searched like vertices
-      reads.push_back(R::ReflectedVertices);        // round 0's corners
+      reads.push_back(R::ReflectedVertices);       // round 0's corners
       return {reads, {R::TessellatedTriangles}};
     }
     case PassId::VirtualObjects: {
@@ -88,7 +88,8 @@ std::optional<std::string> planProblem(const std::vector<PassId>& passes, const 
     const PassDeclaration declared = declaration(pass, needs);
     for (FrameResource read : declared.reads)
       if (!contains(written, read))
-        return std::string("frame plan: pass '") + passName(pass) + "' reads " + resourceName(read) + ", which no pass before it writes";
+        return std::string("frame plan: pass '") + passName(pass) + "' reads " + resourceName(read) +
+               ", which no pass before it writes";
     written.insert(written.end(), declared.writes.begin(), declared.writes.end());
   }
   return std::nullopt;
@@ -101,7 +102,8 @@ std::vector<PassId> cullUnread(const std::vector<PassId>& passes, const FrameNee
   std::vector<PassId> kept;
   for (auto pass = passes.rbegin(); pass != passes.rend(); ++pass) {
     const PassDeclaration declared = declaration(*pass, needs);
-    const bool used = std::any_of(declared.writes.begin(), declared.writes.end(), [&](FrameResource r) { return contains(needed, r); });
+    const bool used = std::any_of(declared.writes.begin(), declared.writes.end(),
+                                  [&](FrameResource r) { return contains(needed, r); });
     if (!used) continue;
     kept.insert(kept.begin(), *pass);
     needed.insert(needed.end(), declared.reads.begin(), declared.reads.end());

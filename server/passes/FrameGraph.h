@@ -12,10 +12,20 @@
 namespace specula::passes {
 
 // Each named like its shaders/ folder (passName()).
-enum class PassId { Scene, MirrorGBuffer, GBufferPyramid, RayHierarchy, ExplosionMap, Search, Tessellation, VirtualObjects, EnvironmentMap };
-inline constexpr std::array kPassIds{PassId::Scene,  PassId::MirrorGBuffer, PassId::GBufferPyramid, PassId::RayHierarchy,
-                                     PassId::ExplosionMap, PassId::Search, PassId::Tessellation, PassId::VirtualObjects,
-                                     PassId::EnvironmentMap};
+enum class PassId {
+  Scene,
+  MirrorGBuffer,
+  GBufferPyramid,
+  RayHierarchy,
+  ExplosionMap,
+  Search,
+  Tessellation,
+  VirtualObjects,
+  EnvironmentMap
+};
+inline constexpr std::array kPassIds{PassId::Scene,        PassId::MirrorGBuffer,  PassId::GBufferPyramid,
+                                     PassId::RayHierarchy, PassId::ExplosionMap,   PassId::Search,
+                                     PassId::Tessellation, PassId::VirtualObjects, PassId::EnvironmentMap};
 const char* passName(PassId pass);
 
 // What passes hand each other within a frame.

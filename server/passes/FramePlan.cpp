@@ -46,7 +46,9 @@ double focalPixels(const math::Camera& camera, glm::ivec2 frameSize) {
 }
 
 // Radius in pixels of a sphere of `radius` seen `distance` away (distance > radius), on the view axis.
-double projectedRadius(double radius, double distance, double focal) { return focal * std::tan(std::asin(radius / distance)); }
+double projectedRadius(double radius, double distance, double focal) {
+  return focal * std::tan(std::asin(radius / distance));
+}
 
 // How much larger in pixels than on the view axis anything seen within the mirror's bounding sphere
 // can be drawn: a pixel's offset is focal * tan(angle off the axis), so pixels per radian grow as 1 /
@@ -56,7 +58,8 @@ double offAxisStretch(const math::Bounds& mirror, const math::Camera& camera) {
   const double distance = glm::length(toCentre);
   if (distance <= mirror.radius()) return std::numeric_limits<double>::infinity();
   const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
-  const double angle = std::acos(std::clamp(glm::dot(forward, toCentre / distance), -1.0, 1.0)) + std::asin(mirror.radius() / distance);
+  const double angle =
+      std::acos(std::clamp(glm::dot(forward, toCentre / distance), -1.0, 1.0)) + std::asin(mirror.radius() / distance);
   if (angle >= glm::radians(80.0)) return std::numeric_limits<double>::infinity();
   return 1.0 / (std::cos(angle) * std::cos(angle));
 }
@@ -66,7 +69,8 @@ double offAxisStretch(const math::Bounds& mirror, const math::Camera& camera) {
 double mirrorDiameterPixels(const math::Bounds& mirror, const math::Camera& camera, glm::ivec2 frameSize) {
   const double distance = glm::length(mirror.center() - camera.eye);
   if (distance <= mirror.radius()) return std::numeric_limits<double>::infinity();
-  return 2.0 * projectedRadius(mirror.radius(), distance, focalPixels(camera, frameSize)) * offAxisStretch(mirror, camera);
+  return 2.0 * projectedRadius(mirror.radius(), distance, focalPixels(camera, frameSize)) *
+         offAxisStretch(mirror, camera);
 }
 
 }  // namespace
@@ -82,7 +86,8 @@ PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRa
   // so much that at the ufo's cost it was predicted 37 ms and took about 500 (3x the whole frame
   // ray-cast). Over-predicting costs less: a part is ray-cast, exact, where searching was cheaper.
   constexpr double kCastPerDraw = 0.021, kCastPerPixelAndObject = 5.1e-5;
-  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3, kSearchPerTriangle = 1.8e-2;
+  constexpr double kSearchPerPart = 8.0, kSearchPerPixel = 5.0e-5, kSearchPerVertex = 1.0e-3,
+                   kSearchPerTriangle = 1.8e-2;
   PartCost cost;
   cost.search = kSearchPerPart + kSearchPerPixel * pixels;
   for (const ReflectionSlotRange* range : reflected) {
@@ -111,8 +116,8 @@ double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, g
   return std::min(framePixels, glm::pi<double>() * pixels * pixels);
 }
 
-double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, double nearestObject, const math::Camera& camera,
-                           glm::ivec2 frameSize, int faceSize) {
+double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, double nearestObject,
+                           const math::Camera& camera, glm::ivec2 frameSize, int faceSize) {
   const double capture = 2.0 * mirror.radius();  // from the capture point to any point of the mirror
   if (mirror.empty() || !std::isfinite(curvatureRadius) || nearestObject <= 2.0 * capture)
     return std::numeric_limits<double>::infinity();
@@ -128,13 +133,15 @@ double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds&
   const double path = eyeToMirror + mirrorToObject, radius = featureRadius.value_or(object.radius());
   const double mirrorSize = mirrorDiameterPixels(mirror, camera, frameSize);
   if (eyeToMirror <= 0.0 || mirrorToObject <= 0.0 || path <= radius) return mirrorSize;
-  return std::min(mirrorSize, 2.0 * projectedRadius(radius, path, focalPixels(camera, frameSize)) * offAxisStretch(mirror, camera));
+  return std::min(mirrorSize,
+                  2.0 * projectedRadius(radius, path, focalPixels(camera, frameSize)) * offAxisStretch(mirror, camera));
 }
 
-bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, double longestEdge, const math::Camera& camera,
-                      glm::ivec2 frameSize, const TessellationSettings& settings) {
+bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, double longestEdge,
+                      const math::Camera& camera, glm::ivec2 frameSize, const TessellationSettings& settings) {
   // Only crack-free pixel tessellation measures its error in pixels edge by edge.
-  if (settings.mode != TessellationMode::CrackFree || settings.metric != TessellationMetric::Pixels || !(settings.threshold > 0.0f))
+  if (settings.mode != TessellationMode::CrackFree || settings.metric != TessellationMetric::Pixels ||
+      !(settings.threshold > 0.0f))
     return false;
   // tessellation-classify.comp splits an edge longer than half its distance from the mirror (at
   // least the mirror's radius) whatever it shows; the nearest point of the object's box bounds that.
@@ -146,9 +153,9 @@ bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, do
   return convexImageDiameterPixels(mirror, object, camera, frameSize, longestEdge) < settings.threshold;
 }
 
-FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
-                    glm::ivec2 frameSize, const ReflectionSettings& settings, const CostRates& rates,
-                    std::optional<PartMethod> explore) {
+FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
+                    const std::vector<math::Bounds>& worldBounds, glm::ivec2 frameSize,
+                    const ReflectionSettings& settings, const CostRates& rates, std::optional<PartMethod> explore) {
   const math::Camera& camera = pose.camera;
   const float aspect = static_cast<float>(frameSize.x) / static_cast<float>(frameSize.y);
   FramePlan plan;
@@ -163,13 +170,16 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     // The part's own pixels: one part of a mirror casts and searches over its share of the mirror only.
     const double pixels = projectedPixels(mirror.reach.bounds.transformed(mirrorToWorld), camera, frameSize);
     const bool search = settings.method == ReflectionMethod::Search;
-    PartMethod method = settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
+    PartMethod method =
+        settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
     // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.
     if (!everything && search && mirrorDiameterPixels(mirrorBounds, camera, frameSize) < settings.errorBudgetPixels)
       method = PartMethod::OwnColour;
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but draws nothing.
-    PlannedMirror planned{&mirror, method, pixels, {}, {}, {}, {}, !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye), 0, 0};
+    PlannedMirror planned{&mirror, method, pixels, {},
+                          {},      {},     {},     !everything && !facesEye(mirror.reach, mirrorToWorld, camera.eye),
+                          0,       0};
     for (const ReflectionSlotRange& range : mirror.reflected) {
       const math::Bounds& objectBounds = worldBounds[range.object];
       if (!everything && (planned.facesAway || !canAppearIn(mirror.reach, mirrorToWorld, objectBounds, camera.eye))) {
@@ -177,7 +187,8 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
         planned.culledVertices += range.vertexCount;
       } else if (method == PartMethod::OwnColour ||
                  (!everything && mirror.kind == scene::SurfaceKind::Convex &&
-                  convexImageDiameterPixels(mirrorBounds, objectBounds, camera, frameSize) < settings.errorBudgetPixels)) {
+                  convexImageDiameterPixels(mirrorBounds, objectBounds, camera, frameSize) <
+                      settings.errorBudgetPixels)) {
         ++planned.belowBudgetObjects;
         planned.belowBudgetVertices += range.vertexCount;
       } else {
@@ -195,21 +206,23 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
       const glm::mat3 linear(pose.objectToWorld[range->object]);
       const double scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
       planned.tessellated.push_back(everything || mirror.kind != scene::SurfaceKind::Convex ||
-                                    !edgesStayUnsplit(mirrorBounds, worldBounds[range->object], scale * range->longestEdge,
-                                                      camera, frameSize, settings.tessellation));
+                                    !edgesStayUnsplit(mirrorBounds, worldBounds[range->object],
+                                                      scale * range->longestEdge, camera, frameSize,
+                                                      settings.tessellation));
     }
     // Everything it reflects far away: a cube map serves most of its pixels within the budget (those
     // seen within 60° of its normal, at least), the rest are ray-cast. One part that cannot meet its
     // own rays: the cube is captured from outside it. It replaces searching, not a small mirror's
     // ray cast, which is exact and costs per pixel, as the cube's lookup does.
-    if (method == PartMethod::VirtualObjects && !everything && search && settings.errorBudgetPixels > 0.0f && mirror.partCount == 1 &&
-        !mirror.seesItself && !planned.reflected.empty()) {
+    if (method == PartMethod::VirtualObjects && !everything && search && settings.errorBudgetPixels > 0.0f &&
+        mirror.partCount == 1 && !mirror.seesItself && !planned.reflected.empty()) {
       double nearest = std::numeric_limits<double>::infinity();
       for (const ReflectionSlotRange* range : planned.reflected)
-        nearest = std::min(nearest, static_cast<double>(glm::length(worldBounds[range->object].center() - mirrorBounds.center()) -
-                                                        worldBounds[range->object].radius()));
-      const double reach = environmentMapReach(mirrorBounds, worldCurvatureRadius(mirror.reach, mirrorToWorld), nearest, camera,
-                                               frameSize, settings.environmentMapSize);
+        nearest = std::min(
+            nearest, static_cast<double>(glm::length(worldBounds[range->object].center() - mirrorBounds.center()) -
+                                         worldBounds[range->object].radius()));
+      const double reach = environmentMapReach(mirrorBounds, worldCurvatureRadius(mirror.reach, mirrorToWorld), nearest,
+                                               camera, frameSize, settings.environmentMapSize);
       const double eyeToMirror = glm::length(mirrorBounds.center() - camera.eye) - mirrorBounds.radius();
       if (eyeToMirror > 0.0 && reach <= 0.5 * settings.errorBudgetPixels * eyeToMirror) {
         planned.method = PartMethod::EnvironmentMap;
@@ -235,10 +248,13 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
     return mirror.method == PartMethod::VirtualObjects && !(settings.solveExtrusions && mirror.slots->extrusion);
   });
   if (plan.search && !strategyNeeded) plan.passes.push_back(PassId::Search);
-  if (strategyNeeded)
-    switch (settings.search) {
-      case SearchStrategy::Crosshair: plan.passes.insert(plan.passes.end(), {PassId::GBufferPyramid, PassId::Search}); break;
-      case SearchStrategy::Hierarchy: plan.passes.insert(plan.passes.end(), {PassId::RayHierarchy, PassId::Search}); break;
+  if (strategyNeeded) switch (settings.search) {
+      case SearchStrategy::Crosshair:
+        plan.passes.insert(plan.passes.end(), {PassId::GBufferPyramid, PassId::Search});
+        break;
+      case SearchStrategy::Hierarchy:
+        plan.passes.insert(plan.passes.end(), {PassId::RayHierarchy, PassId::Search});
+        break;
       case SearchStrategy::ExplosionMap:
         // The refinement's climb falls back to the pyramid's cold start where the map's point is off the part.
         plan.passes.push_back(PassId::ExplosionMap);
@@ -246,7 +262,8 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, 
         plan.passes.push_back(PassId::Search);
         break;
     }
-  plan.tessellate = plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
+  plan.tessellate =
+      plan.search && settings.tessellation.mode != TessellationMode::None && settings.tessellation.maxLevel > 0;
   if (plan.tessellate) plan.passes.push_back(PassId::Tessellation);
   plan.passes.push_back(PassId::VirtualObjects);
   // After the virtual objects: they ray-cast the pixels the cube map cannot serve.

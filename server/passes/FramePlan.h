@@ -18,7 +18,8 @@ enum class PartMethod {
   VirtualObjects,  // search every reflected vertex, tessellate, rasterize the virtual objects
   RayCast,         // cast each of its pixels' reflected rays against the objects' meshes
   OwnColour,       // smaller on screen than the error budget: its own colour and the background it reflects
-  EnvironmentMap,  // everything it reflects is far: a cube map from its centre, ray-cast where that is off by more than the budget
+  EnvironmentMap,  // everything it reflects is far: a cube map from its centre, ray-cast where that is off by more than
+                   // the budget
 };
 
 // "virtual-objects", "ray-cast", "own-colour" or "environment-map", as render, bench and the protocol name them.
@@ -68,11 +69,11 @@ struct PlannedMirror {
 };
 
 struct FramePlan {
-  std::vector<PassId> passes;                   // in execution order, none whose output nothing reads
-  FrameNeeds needs;                             // what decides some passes' reads (FrameGraph)
-  std::vector<PlannedMirror> mirrors;           // visible mirror parts, a mirror's parts in a row
-  bool search = false;                          // some part is drawn as virtual objects: the search runs
-  bool tessellate = false;                      // virtual objects come from the tessellation pass
+  std::vector<PassId> passes;          // in execution order, none whose output nothing reads
+  FrameNeeds needs;                    // what decides some passes' reads (FrameGraph)
+  std::vector<PlannedMirror> mirrors;  // visible mirror parts, a mirror's parts in a row
+  bool search = false;                 // some part is drawn as virtual objects: the search runs
+  bool tessellate = false;             // virtual objects come from the tessellation pass
   // The settings' precision, unless RGBA16F cannot place a visible mirror's texels (far from the origin).
   GBufferPrecision gbufferPrecision = GBufferPrecision::Float32;
 };
@@ -86,8 +87,9 @@ bool halfFloatsResolve(const math::Bounds& mirrorBounds);
 // (passes::canAppearIn); a part is ray-cast by settings.rayCast (by default where predictPartCost()
 // scaled by `rates` says it is cheaper; with `explore`, every part the cost decides for takes that
 // method, to measure it). Everything keeps every mirror and object and searches them all.
-FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose, const std::vector<math::Bounds>& worldBounds,
-                    glm::ivec2 frameSize, const ReflectionSettings& settings, const CostRates& rates = {},
+FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
+                    const std::vector<math::Bounds>& worldBounds, glm::ivec2 frameSize,
+                    const ReflectionSettings& settings, const CostRates& rates = {},
                     std::optional<PartMethod> explore = std::nullopt);
 
 // Frame pixels the box's enclosing sphere covers, about (all of them when the eye is inside it).
@@ -100,8 +102,8 @@ double projectedPixels(const math::Bounds& bounds, const math::Camera& camera, g
 // direction, and a direction error turns into a move on the mirror of curvature radius / 2 per
 // radian (divided by the incidence cosine across the plane of incidence). Infinite when no bound
 // holds (objects within three mirror radii, a flat mirror).
-double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, double nearestObject, const math::Camera& camera,
-                           glm::ivec2 frameSize, int faceSize);
+double environmentMapReach(const math::Bounds& mirror, double curvatureRadius, double nearestObject,
+                           const math::Camera& camera, glm::ivec2 frameSize, int faceSize);
 
 // An upper bound on the diameter in frame pixels of any image of `object` in a convex mirror part
 // inside `mirror` (world boxes), seen from `eye`: a flat mirror shows an object at least as far as
@@ -116,8 +118,8 @@ double convexImageDiameterPixels(const math::Bounds& mirror, const math::Bounds&
 // `object` whose longest edge is `longestEdge` (world) in a convex part inside `mirror`: the image
 // of each of its triangles is smaller than the threshold (convexImageDiameterPixels), so its straight
 // virtual triangle is within the threshold of the curved image, and no edge is long beside the mirror.
-bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, double longestEdge, const math::Camera& camera,
-                      glm::ivec2 frameSize, const TessellationSettings& settings);
+bool edgesStayUnsplit(const math::Bounds& mirror, const math::Bounds& object, double longestEdge,
+                      const math::Camera& camera, glm::ivec2 frameSize, const TessellationSettings& settings);
 
 // Whether a world-space box can be seen through the camera's frustum widened by `margin`.
 bool boundsInFrustum(const math::Bounds& bounds, const math::Camera& camera, float aspect, float margin);

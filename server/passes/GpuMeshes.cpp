@@ -8,8 +8,9 @@ namespace specula::passes {
 GpuMeshes::GpuMeshes(const gl::GlApi& gl, const std::vector<scene::Mesh>& meshes) : gl_(&gl) {
   meshes_.reserve(meshes.size());
   for (const scene::Mesh& mesh : meshes) {
-    Entry entry{gl::GlVertexArray(gl), gl::GlBuffer(gl), gl::GlBuffer(gl), static_cast<GLsizei>(mesh.indices.size()),
-                std::nullopt, 0};
+    Entry entry{gl::GlVertexArray(gl), gl::GlBuffer(gl),
+                gl::GlBuffer(gl),      static_cast<GLsizei>(mesh.indices.size()),
+                std::nullopt,          0};
     gl.BindVertexArray(entry.vertexArray.id());
     gl.BindBuffer(GL_ARRAY_BUFFER, entry.vertices.id());
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(scene::Vertex)),

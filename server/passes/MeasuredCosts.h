@@ -36,7 +36,7 @@ class MeasuredCosts {
 
  private:
   CostRates rates_;
-  bool searchLearnt_ = false, rayCastLearnt_ = false;  // measured at least once
+  bool searchLearnt_ = false, rayCastLearnt_ = false;   // measured at least once
   int searchMeasuredAt_ = -1, rayCastMeasuredAt_ = -1;  // the frame of each method's last measurement
   int frame_ = 0;
 };

@@ -41,17 +41,19 @@ TexelRect projectedRect(const math::Bounds& bounds, const glm::mat4& worldToClip
 }  // namespace
 
 Result<std::unique_ptr<MirrorGBufferPass>> MirrorGBufferPass::create(const gl::GlApi& gl) {
-  auto mesh = gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-mesh.frag"});
+  auto mesh =
+      gl::ShaderProgram::build(gl, {"mirror-gbuffer/mirror-gbuffer.vert", "mirror-gbuffer/mirror-gbuffer-mesh.frag"});
   if (!mesh) return Error{mesh.error()};
-  auto patch = gl::ShaderProgram::build(gl, {"common/bezier-patch.vert", "common/bezier-patch.tesc", "common/bezier-patch.tese",
-                                             "mirror-gbuffer/mirror-gbuffer-patch.frag"});
+  auto patch = gl::ShaderProgram::build(gl, {"common/bezier-patch.vert", "common/bezier-patch.tesc",
+                                             "common/bezier-patch.tese", "mirror-gbuffer/mirror-gbuffer-patch.frag"});
   if (!patch) return Error{patch.error()};
-  auto quadric = gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer-quadric.frag"});
+  auto quadric =
+      gl::ShaderProgram::build(gl, {"common/quadric-proxy.vert", "mirror-gbuffer/mirror-gbuffer-quadric.frag"});
   if (!quadric) return Error{quadric.error()};
   auto partLayer = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "mirror-gbuffer/part-layer.frag"});
   if (!partLayer) return Error{partLayer.error()};
-  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(gl, std::move(mesh.value()), std::move(patch.value()),
-                                                             std::move(quadric.value()), std::move(partLayer.value())));
+  return std::unique_ptr<MirrorGBufferPass>(new MirrorGBufferPass(
+      gl, std::move(mesh.value()), std::move(patch.value()), std::move(quadric.value()), std::move(partLayer.value())));
 }
 
 int MirrorGBufferPass::attachLayer(const FrameContext& frame, int layer, bool parametric) const {
@@ -60,7 +62,8 @@ int MirrorGBufferPass::attachLayer(const FrameContext& frame, int layer, bool pa
   gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, resources.positionTexture(), 0, layer);
   gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, resources.normalTexture(), 0, layer);
   // A parametric mirror also records each texel's (u, v, patch) for the search's exact refinement.
-  gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, parametric ? resources.surfaceTexture() : 0, 0, layer);
+  gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, parametric ? resources.surfaceTexture() : 0, 0,
+                             layer);
   const int buffers = parametric ? 3 : 2;
   gl.DrawBuffers(buffers, kDrawBuffers);
   return buffers;
@@ -73,8 +76,9 @@ int MirrorGBufferPass::attachScratch(const FrameContext& frame) {
     scratch_.emplace(gl);  // immutable storage: new textures for a new size or format
     scratch_->size = resources.size();
     scratch_->format = resources.textureFormat();
-    for (auto [texture, format] : {std::pair{&scratch_->position, scratch_->format}, std::pair{&scratch_->normal, scratch_->format},
-                                   std::pair{&scratch_->surface, static_cast<GLenum>(GL_RGBA32F)}}) {
+    for (auto [texture, format] :
+         {std::pair{&scratch_->position, scratch_->format}, std::pair{&scratch_->normal, scratch_->format},
+          std::pair{&scratch_->surface, static_cast<GLenum>(GL_RGBA32F)}}) {
       gl.BindTexture(GL_TEXTURE_2D, texture->id());
       gl.TexStorage2D(GL_TEXTURE_2D, 1, format, scratch_->size.x, scratch_->size.y);
     }
@@ -87,7 +91,8 @@ int MirrorGBufferPass::attachScratch(const FrameContext& frame) {
   return 3;
 }
 
-void MirrorGBufferPass::drawMirror(const FrameContext& frame, const PlannedMirror& planned, const TexelRect& rect) const {
+void MirrorGBufferPass::drawMirror(const FrameContext& frame, const PlannedMirror& planned,
+                                   const TexelRect& rect) const {
   const gl::GlApi& gl = frame.gl;
   const MirrorSlots& mirror = *planned.slots;
   const glm::ivec2 size = frame.reflections.size();
@@ -108,7 +113,8 @@ void MirrorGBufferPass::drawMirror(const FrameContext& frame, const PlannedMirro
   program.use();
   program.set("objectToWorld", objectToWorld);
   program.set("normalToWorld", math::normalMatrix(objectToWorld));
-  if (mirror.partCount > 1) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, frame.reflections.triangleParts(mirror.mirrorObject));
+  if (mirror.partCount > 1)
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, frame.reflections.triangleParts(mirror.mirrorObject));
   if (drawn.patches.empty()) {
     // A mirror of several parts is drawn whole for depth, marking only this part's texels.
     program.set("part", mirror.partCount > 1 ? mirror.part : -1);

@@ -19,7 +19,8 @@ bool keepsAngles(const glm::mat4& transform) {
 }
 
 float smallestScale(const glm::mat4& transform) {
-  return std::min({glm::length(glm::vec3(transform[0])), glm::length(glm::vec3(transform[1])), glm::length(glm::vec3(transform[2]))});
+  return std::min({glm::length(glm::vec3(transform[0])), glm::length(glm::vec3(transform[1])),
+                   glm::length(glm::vec3(transform[2]))});
 }
 
 // Whether the largest value of (P − S)·N over P in the object's sphere, S on the part and N in the
@@ -64,17 +65,20 @@ bool behindThePart(const MirrorReach& reach, const glm::mat4& mirrorToWorld, con
   const float scale = std::max({glm::length(glm::vec3(mirrorToWorld[0])), glm::length(glm::vec3(mirrorToWorld[1])),
                                 glm::length(glm::vec3(mirrorToWorld[2]))});
   const float depth = scale * std::min(glm::length(halfExtent), glm::dot(glm::abs(reach.normalAxis), halfExtent) +
-                                                                     sine * glm::length(halfExtent));
+                                                                    sine * glm::length(halfExtent));
   const glm::vec3 partCentre(mirrorToWorld * glm::vec4(reach.bounds.center(), 1.0f));
   return behindEveryTangentPlane(partCentre, depth, axis, reach.normalCosine, centre, radius);
 }
 
 }  // namespace
 
-MirrorReach MirrorReach::ofMeshPart(const scene::Mesh& mesh, const scene::MirrorParts& parts, std::size_t part, bool closedConvex) {
+MirrorReach MirrorReach::ofMeshPart(const scene::Mesh& mesh, const scene::MirrorParts& parts, std::size_t part,
+                                    bool closedConvex) {
   MirrorReach reach;
   glm::vec3 normalSum(0.0f);
-  const auto inPart = [&](std::size_t triangle) { return parts.triangleParts.empty() || parts.triangleParts[triangle] == part; };
+  const auto inPart = [&](std::size_t triangle) {
+    return parts.triangleParts.empty() || parts.triangleParts[triangle] == part;
+  };
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     if (!inPart(t)) continue;
     for (int k = 0; k < 3; ++k) {
@@ -104,7 +108,8 @@ MirrorReach MirrorReach::ofMeshPart(const scene::Mesh& mesh, const scene::Mirror
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
       if (inPart(t))
         for (int k = 0; k < 3; ++k)
-          reach.normalCosine = std::min(reach.normalCosine, glm::dot(mesh.vertices[mesh.indices[3 * t + k]].normal, reach.normalAxis));
+          reach.normalCosine =
+              std::min(reach.normalCosine, glm::dot(mesh.vertices[mesh.indices[3 * t + k]].normal, reach.normalAxis));
   }
   if (closedConvex && !reach.bounds.empty()) {
     // The surface's area-weighted centroid (inside a convex body; duplicated seam vertices do not
@@ -113,8 +118,8 @@ MirrorReach MirrorReach::ofMeshPart(const scene::Mesh& mesh, const scene::Mirror
     glm::dvec3 weighted(0.0);
     double area = 0.0;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-      const glm::dvec3 a(mesh.vertices[mesh.indices[3 * t]].position), b(mesh.vertices[mesh.indices[3 * t + 1]].position),
-          c(mesh.vertices[mesh.indices[3 * t + 2]].position);
+      const glm::dvec3 a(mesh.vertices[mesh.indices[3 * t]].position),
+          b(mesh.vertices[mesh.indices[3 * t + 1]].position), c(mesh.vertices[mesh.indices[3 * t + 2]].position);
       const double triangleArea = 0.5 * glm::length(glm::cross(b - a, c - a));
       weighted += triangleArea * (a + b + c) / 3.0;
       area += triangleArea;
@@ -153,7 +158,8 @@ float worldCurvatureRadius(const MirrorReach& reach, const glm::mat4& mirrorToWo
   return reach.largestCurvatureRadius * glm::length(glm::vec3(mirrorToWorld[0]));
 }
 
-bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object, const glm::vec3& eye) {
+bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object,
+                 const glm::vec3& eye) {
   if (object.empty() || reach.bounds.empty()) return true;
   const glm::vec3 objectCentre = object.center();
   const float objectRadius = object.radius();

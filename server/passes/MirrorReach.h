@@ -36,7 +36,8 @@ struct MirrorReach {
 
   // Part `part` of a mesh mirror (`parts` from scene::MirrorParts::of on the same mesh); a closed
   // convex mesh also gets its inscribed ball.
-  static MirrorReach ofMeshPart(const scene::Mesh& mesh, const scene::MirrorParts& parts, std::size_t part, bool closedConvex);
+  static MirrorReach ofMeshPart(const scene::Mesh& mesh, const scene::MirrorParts& parts, std::size_t part,
+                                bool closedConvex);
   // An exact quadric: its bounds and the ball of its smallest radius.
   static MirrorReach ofQuadric(const scene::AnalyticShape& shape);
 };
@@ -44,7 +45,8 @@ struct MirrorReach {
 // Whether anything inside the world-space box `object` can be reflected by the part placed by
 // `mirrorToWorld` and seen from `eye`: false only when it certainly cannot, because the object lies
 // behind every tangent plane of the part, or in the eye's shadow of the part's inscribed ball.
-bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object, const glm::vec3& eye);
+bool canAppearIn(const MirrorReach& reach, const glm::mat4& mirrorToWorld, const math::Bounds& object,
+                 const glm::vec3& eye);
 
 // The part's largest radius of curvature in world units: infinite unless `mirrorToWorld` keeps angles.
 float worldCurvatureRadius(const MirrorReach& reach, const glm::mat4& mirrorToWorld);

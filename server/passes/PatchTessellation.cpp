@@ -33,11 +33,13 @@ PatchTessellationMeasure PatchTessellationProbe::measure(const scene::Scene& sce
   PatchTessellationMeasure measure;
   // Room for the finest tessellation of every patch (64 × 64 quads), so no area is lost.
   std::size_t finest = 0;
-  for (const scene::SceneObject& object : scene.objects) finest += scene.meshes[object.mesh].patches.size() * 2 * 64 * 64;
+  for (const scene::SceneObject& object : scene.objects)
+    finest += scene.meshes[object.mesh].patches.size() * 2 * 64 * 64;
   if (finest == 0) return measure;
   if (finest > capacity_) {
     gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, areas_.id());
-    gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>((finest + 1) * sizeof(float)), nullptr, GL_DYNAMIC_READ);
+    gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>((finest + 1) * sizeof(float)), nullptr,
+                  GL_DYNAMIC_READ);
     capacity_ = finest;
   }
   const std::uint32_t zero = 0;

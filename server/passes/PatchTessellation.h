@@ -24,8 +24,8 @@ void setPatchView(const gl::ShaderProgram& program, const glm::mat4& objectToWor
 
 // What the tessellation made of a scene's parametric meshes for one view.
 struct PatchTessellationMeasure {
-  std::size_t patches = 0;    // of the parametric meshes, in view or not
-  std::size_t triangles = 0;  // generated, over every patch not dropped as out of view
+  std::size_t patches = 0;        // of the parametric meshes, in view or not
+  std::size_t triangles = 0;      // generated, over every patch not dropped as out of view
   std::vector<float> pixelAreas;  // of the generated triangles at least partly on screen, in pixels
 };
 

@@ -4,7 +4,8 @@
 
 namespace specula::passes {
 
-void setMirrorQuadric(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror, const glm::mat4& objectToWorld) {
+void setMirrorQuadric(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror,
+                      const glm::mat4& objectToWorld) {
   const bool analytic = mirror.exactQuadric();
   program.set("analytic", analytic ? 1 : 0);
   if (!analytic) return;
@@ -15,8 +16,8 @@ void setMirrorQuadric(const gl::ShaderProgram& program, const scene::MirrorInfo&
   program.set("quadricRadii", mirror.analytic->radii);
 }
 
-void setMirrorExtrusion(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror, const glm::mat4& objectToWorld,
-                        bool solve) {
+void setMirrorExtrusion(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror,
+                        const glm::mat4& objectToWorld, bool solve) {
   const std::optional<math::Extrusion> world =
       solve && mirror.extrusion ? mirror.extrusion->transformed(glm::dmat4(objectToWorld)) : std::nullopt;
   program.set("extrusion", world ? 1 : 0);

@@ -14,11 +14,12 @@ inline constexpr int kQuadricProxyVertices = 36;
 
 // Sets `analytic` to 1 and the quadric when the mirror's surface is its exact quadric
 // (MirrorInfo::exactQuadric); to 0 otherwise (the mesh is the surface).
-void setMirrorQuadric(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror, const glm::mat4& objectToWorld);
+void setMirrorQuadric(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror,
+                      const glm::mat4& objectToWorld);
 
 // Sets `extrusion` to 1 and the world extrusion when the mirror declares one and `solve` is on
 // (ReflectionSettings::solveExtrusions); to 0 otherwise, and when its transform flattens the profile.
-void setMirrorExtrusion(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror, const glm::mat4& objectToWorld,
-                        bool solve);
+void setMirrorExtrusion(const gl::ShaderProgram& program, const scene::MirrorInfo& mirror,
+                        const glm::mat4& objectToWorld, bool solve);
 
 }  // namespace specula::passes

@@ -17,7 +17,8 @@ class RayHierarchyPass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  RayHierarchyPass(gl::ShaderProgram leaves, gl::ShaderProgram level) : leaves_(std::move(leaves)), level_(std::move(level)) {}
+  RayHierarchyPass(gl::ShaderProgram leaves, gl::ShaderProgram level)
+      : leaves_(std::move(leaves)), level_(std::move(level)) {}
   gl::ShaderProgram leaves_, level_;
 };
 

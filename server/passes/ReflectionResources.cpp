@@ -18,8 +18,9 @@ namespace {
 
 void allocateSlots(const gl::GlApi& gl, const gl::GlBuffer& buffer, std::uint32_t slots) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(slots, 1) * sizeof(ReflectedVertex)),
-                nullptr, GL_DYNAMIC_COPY);
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER,
+                static_cast<GLsizeiptr>(std::max<std::size_t>(slots, 1) * sizeof(ReflectedVertex)), nullptr,
+                GL_DYNAMIC_COPY);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
@@ -38,8 +39,16 @@ constexpr float kGridDeviationsSkipped = 4.0f;
 }  // namespace
 
 ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots)
-    : gl_(&gl), scene_(scene), slots_(slots), position_(gl), normal_(gl), depth_(gl), framebuffer_(gl), reflected_(gl),
-      statistics_(gl), tessellation_(gl) {
+    : gl_(&gl),
+      scene_(scene),
+      slots_(slots),
+      position_(gl),
+      normal_(gl),
+      depth_(gl),
+      framebuffer_(gl),
+      reflected_(gl),
+      statistics_(gl),
+      tessellation_(gl) {
   allocateSlots(gl, reflected_, slots.slotCount);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, statistics_.id());
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, sizeof(SearchStatistics), nullptr, GL_DYNAMIC_READ);
@@ -176,7 +185,8 @@ glm::vec4 ReflectionResources::coveredFramePixels(int layer) const {
   // The G-buffer is the frame widened by the margin, at texelsPerPixel texels per pixel.
   const TexelRect& covered = covered_[static_cast<std::size_t>(layer)];
   const glm::vec2 margin(margin_);
-  return glm::vec4(glm::vec2(covered.low) / texelsPerPixel() - margin, glm::vec2(covered.high) / texelsPerPixel() - margin);
+  return glm::vec4(glm::vec2(covered.low) / texelsPerPixel() - margin,
+                   glm::vec2(covered.high) / texelsPerPixel() - margin);
 }
 
 void ReflectionResources::resetCoherence() {
@@ -226,7 +236,8 @@ ReflectionResources::RayHierarchyLevel ReflectionResources::readRayHierarchyLeve
   const std::size_t texels = static_cast<std::size_t>(result.size.x) * static_cast<std::size_t>(result.size.y) *
                              std::max<std::size_t>(slots_.mirrors.size(), 1);
   gl_->MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  for (auto [texture, out] : {std::pair{&*rayHierarchySpheres_, &result.spheres}, std::pair{&*rayHierarchyCones_, &result.cones}}) {
+  for (auto [texture, out] :
+       {std::pair{&*rayHierarchySpheres_, &result.spheres}, std::pair{&*rayHierarchyCones_, &result.cones}}) {
     out->resize(texels);
     gl_->BindTexture(GL_TEXTURE_2D_ARRAY, texture->id());
     gl_->GetTexImage(GL_TEXTURE_2D_ARRAY, level, GL_RGBA, GL_FLOAT, out->data());

@@ -50,7 +50,9 @@ class ReflectionResources {
   glm::ivec2 margin() const { return margin_; }  // frame pixels added on each side
   // The widened frame (frame + 2 × margin, in pixels) the G-buffer covers, at its resolution.
   glm::ivec2 coveredPixels() const { return coveredPixels_; }
-  float texelsPerPixel() const { return static_cast<float>(size_.x) / static_cast<float>(std::max(coveredPixels_.x, 1)); }
+  float texelsPerPixel() const {
+    return static_cast<float>(size_.x) / static_cast<float>(std::max(coveredPixels_.x, 1));
+  }
   GBufferPrecision precision() const { return precision_; }
   GLenum textureFormat() const { return precision_ == GBufferPrecision::Float16 ? GL_RGBA16F : GL_RGBA32F; }
   int coarseLevel() const { return coarseLevel_; }

@@ -22,10 +22,9 @@ std::optional<SearchStrategy> parseSearchStrategy(std::string_view name) {
 std::string describeTessellation(const TessellationSettings& settings) {
   if (settings.mode == TessellationMode::None || settings.maxLevel == 0) return "none";
   char text[96];
-  std::snprintf(text, sizeof text, "%s %s >= %g level %d",
-                settings.mode == TessellationMode::Paper ? "paper" : "crack-free",
-                settings.metric == TessellationMetric::Pixels ? "pixels" : "angle", settings.threshold,
-                settings.maxLevel);
+  std::snprintf(
+      text, sizeof text, "%s %s >= %g level %d", settings.mode == TessellationMode::Paper ? "paper" : "crack-free",
+      settings.metric == TessellationMetric::Pixels ? "pixels" : "angle", settings.threshold, settings.maxLevel);
   return text;
 }
 

@@ -30,7 +30,7 @@ enum class SearchStrategy {
 };
 
 inline constexpr SearchStrategy kSearchStrategies[] = {SearchStrategy::Crosshair, SearchStrategy::Hierarchy,
-                                                      SearchStrategy::ExplosionMap};
+                                                       SearchStrategy::ExplosionMap};
 
 // "crosshair", "hierarchy" or "explosion-map": how reports and the command line name a strategy.
 const char* searchStrategyName(SearchStrategy strategy);

@@ -39,19 +39,26 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
     }
     const bool seesItself = object.reflected && !exactQuadric && !parts.cannotSeeItself(info.closed);
     for (std::size_t p = 0; p < parts.parts.size(); ++p) {
-      const MirrorReach reach =
-          exactQuadric ? MirrorReach::ofQuadric(*info.analytic)
-                       : MirrorReach::ofMeshPart(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], parts, p,
-                                                 parts.cannotSeeItself(info.closed));
-      MirrorSlots mirror{m, static_cast<int>(slots.mirrors.size()), stencil, static_cast<int>(p),
-                         static_cast<int>(parts.parts.size()), parts.parts[p].kind, seesItself, reach, {},
+      const MirrorReach reach = exactQuadric
+                                    ? MirrorReach::ofQuadric(*info.analytic)
+                                    : MirrorReach::ofMeshPart(scene.meshes[info.closedTwinMesh.value_or(object.mesh)],
+                                                              parts, p, parts.cannotSeeItself(info.closed));
+      MirrorSlots mirror{m,
+                         static_cast<int>(slots.mirrors.size()),
+                         stencil,
+                         static_cast<int>(p),
+                         static_cast<int>(parts.parts.size()),
+                         parts.parts[p].kind,
+                         seesItself,
+                         reach,
+                         {},
                          info.extrusion.has_value()};
       for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         if (o == m || !scene.objects[o].reflected) continue;
         const scene::Mesh& mesh = scene.meshes[scene.objects[o].mesh];
         const auto vertexCount = static_cast<std::uint32_t>(mesh.vertices.size());
-        mirror.reflected.push_back(
-            {o, slots.slotCount, vertexCount, static_cast<std::uint32_t>(mesh.triangleCount()), longestEdges[scene.objects[o].mesh]});
+        mirror.reflected.push_back({o, slots.slotCount, vertexCount, static_cast<std::uint32_t>(mesh.triangleCount()),
+                                    longestEdges[scene.objects[o].mesh]});
         slots.slotCount += vertexCount;
       }
       slots.mirrors.push_back(std::move(mirror));

@@ -26,8 +26,8 @@ struct MirrorSlots {
   int stencil = 1;               // the mirror's stencil value, shared by its parts
   int part = 0, partCount = 1;   // which part of the mirror's search mesh
   scene::SurfaceKind kind = scene::SurfaceKind::Convex;
-  bool seesItself = false;       // reflected rays may meet this mirror again: its own mesh is ray-cast
-  MirrorReach reach;             // where its reflected rays can go (object space): the plan culls with it
+  bool seesItself = false;  // reflected rays may meet this mirror again: its own mesh is ray-cast
+  MirrorReach reach;        // where its reflected rays can go (object space): the plan culls with it
   std::vector<ReflectionSlotRange> reflected;
   // Declared a linear extrusion (scene::MirrorInfo::extrusion): the search can solve it exactly and
   // then needs none of a strategy's structures (ReflectionSettings::solveExtrusions).

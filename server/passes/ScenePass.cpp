@@ -62,7 +62,8 @@ void ScenePass::execute(const FrameContext& frame) {
       program.set("normalToWorld", math::normalMatrix(frame.pose.objectToWorld[i]));
     }
     if (patches)
-      setPatchView(program, frame.pose.objectToWorld[i], frame.view.worldToClip(), {frame.target.width(), frame.target.height()});
+      setPatchView(program, frame.pose.objectToWorld[i], frame.view.worldToClip(),
+                   {frame.target.width(), frame.target.height()});
     const scene::Material& material = frame.scene.materials[object.material];
     setMaterial(program, material, frame.textures);
     program.set("surfaceWeight", stencil[i] != 0 ? 1.0f - material.reflectivity : 1.0f);

@@ -21,7 +21,10 @@ class ScenePass final : public Pass {
 
  private:
   ScenePass(const gl::GlApi& gl, gl::ShaderProgram program, gl::ShaderProgram quadric, gl::ShaderProgram patches)
-      : program_(std::move(program)), quadric_(std::move(quadric)), patches_(std::move(patches)), emptyVertexArray_(gl) {}
+      : program_(std::move(program)),
+        quadric_(std::move(quadric)),
+        patches_(std::move(patches)),
+        emptyVertexArray_(gl) {}
   gl::ShaderProgram program_;
   gl::ShaderProgram quadric_;  // exact quadrics inside their proxy boxes
   gl::ShaderProgram patches_;  // parametric meshes, tessellated for the view

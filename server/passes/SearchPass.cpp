@@ -77,23 +77,27 @@ void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame
   program.set("exactGBuffer", parametric ? 1 : 0);
   if (parametric) {
     program.set("patchObjectToWorld", frame.pose.objectToWorld[mirror.mirrorObject]);
-    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSearchPatchPointsBinding, frame.meshes.patchPointsBuffer(searchMesh));
+    frame.gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kSearchPatchPointsBinding,
+                            frame.meshes.patchPointsBuffer(searchMesh));
   }
   if (frame.settings.search == SearchStrategy::ExplosionMap) setExplosionMapFrame(program, frame, mirror);
 }
 
-std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots) {
+std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene,
+                                              const ReflectionSlots& slots) {
   GLint64 maxStorageBytes = 0;
   GLint maxGroups = 0;
   gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxStorageBytes);
   gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
   const auto mebibytes = [](std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; };
   const std::string limit = "this GL allows " + mebibytes(static_cast<std::uint64_t>(maxStorageBytes)) +
-                            " of shader storage per buffer and " + std::to_string(maxGroups) + " work groups per dispatch";
+                            " of shader storage per buffer and " + std::to_string(maxGroups) +
+                            " work groups per dispatch";
   const std::uint64_t slotBytes = std::uint64_t{slots.slotCount} * sizeof(ReflectedVertex);
   if (slotBytes > static_cast<std::uint64_t>(maxStorageBytes))
-    return "scene '" + scene.name + "' needs " + std::to_string(slots.slotCount) + " reflection slots (" + mebibytes(slotBytes) +
-           ", mirrors × reflected vertices); " + limit + ": set \"reflected\": false on objects no mirror needs to show, "
+    return "scene '" + scene.name + "' needs " + std::to_string(slots.slotCount) + " reflection slots (" +
+           mebibytes(slotBytes) + ", mirrors × reflected vertices); " + limit +
+           ": set \"reflected\": false on objects no mirror needs to show, "
            "or use fewer mirrors or a GPU with larger limits";
   for (const MirrorSlots& mirror : slots.mirrors)
     for (const ReflectionSlotRange& range : mirror.reflected) {

@@ -16,7 +16,8 @@ void setSearchMirror(const gl::ShaderProgram& program, const FrameContext& frame
 
 // What in `scene` this GL cannot search, naming the limit and the fix: the slot buffer and each
 // reflected mesh's vertex buffer are bound whole as shader storage, and one dispatch covers a mesh.
-std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots);
+std::optional<std::string> searchLimitProblem(const gl::GlApi& gl, const scene::Scene& scene,
+                                              const ReflectionSlots& slots);
 
 class SearchPass final : public Pass {
  public:

@@ -62,7 +62,8 @@ void TessellationBuffers::beginFrame(std::vector<TessellatedRun> runs, const std
     allocate(gl, requests_, splits * kRequestBytes);
     splitCapacity_ = splits;
   }
-  const std::size_t finished = std::min(kMaxTriangles, std::max({finishedCapacity_, 2 * roundInput, kInitialTriangles}));
+  const std::size_t finished =
+      std::min(kMaxTriangles, std::max({finishedCapacity_, 2 * roundInput, kInitialTriangles}));
   if (finished != finishedCapacity_) {
     allocate(gl, finished_, finished * kTriangleBytes);
     finishedCapacity_ = finished;
@@ -118,10 +119,12 @@ std::vector<FinishedVertex> TessellationBuffers::readFinished() const {
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<gpu::RunDraws> draws(runs_.size());
   gl.BindBuffer(GL_COPY_READ_BUFFER, draws_.id());
-  gl.GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(draws.size() * sizeof(gpu::RunDraws)), draws.data());
+  gl.GetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(draws.size() * sizeof(gpu::RunDraws)),
+                      draws.data());
   std::size_t records = 0;
   for (const gpu::RunDraws& run : draws)
-    for (const gpu::DrawArraysCommand& round : run.rounds) records = std::max<std::size_t>(records, round.first + round.count);
+    for (const gpu::DrawArraysCommand& round : run.rounds)
+      records = std::max<std::size_t>(records, round.first + round.count);
   std::vector<TessellatedVertex> finished(records);
   if (!finished.empty()) {
     gl.BindBuffer(GL_COPY_READ_BUFFER, finished_.id());

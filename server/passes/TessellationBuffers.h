@@ -46,21 +46,21 @@ struct FinishedVertex {
 };
 
 struct TessellationStatistics {
-  std::uint32_t inputTriangles = 0;                 // reflected objects' triangles, summed over mirrors
-  std::vector<std::uint32_t> trianglesPerRound;     // working triangles entering each round
-  std::uint32_t finishedTriangles = 0;              // triangles the virtual-objects pass draws
-  SearchStatistics midpointSearches;                // the searches for new edge midpoints
-  bool capped = false;                              // a list reached kMaxTriangles: splitting stopped early
-  std::uint32_t predictedUnsplitObjects = 0;        // drawn from their meshes without a round (PlannedMirror::tessellated)
+  std::uint32_t inputTriangles = 0;              // reflected objects' triangles, summed over mirrors
+  std::vector<std::uint32_t> trianglesPerRound;  // working triangles entering each round
+  std::uint32_t finishedTriangles = 0;           // triangles the virtual-objects pass draws
+  SearchStatistics midpointSearches;             // the searches for new edge midpoints
+  bool capped = false;                           // a list reached kMaxTriangles: splitting stopped early
+  std::uint32_t predictedUnsplitObjects = 0;     // drawn from their meshes without a round (PlannedMirror::tessellated)
 };
 
 class TessellationBuffers {
  public:
   static constexpr std::size_t kRecordBytes = sizeof(TessellatedVertex);
   static constexpr std::size_t kTriangleBytes = 3 * kRecordBytes;
-  static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 32;  // one EdgeSplit
+  static constexpr std::size_t kSplitBytes = 3 * kRecordBytes + 32;        // one EdgeSplit
   static constexpr std::size_t kRequestBytes = 3 * sizeof(std::uint32_t);  // a triangle's edge requests, at most
-  static constexpr std::size_t kMaxTriangles = std::size_t{1} << 20;  // per list: 240 MiB
+  static constexpr std::size_t kMaxTriangles = std::size_t{1} << 20;       // per list: 240 MiB
 
   explicit TessellationBuffers(const gl::GlApi& gl);
 

@@ -16,7 +16,8 @@ GLuint groupsFor(std::size_t invocations) {
 // Byte offsets of the indirect dispatches a later round launches: in the totals, over the part's
 // triangles and over its searches; in a run record, round 0's search of that run.
 std::size_t partGroupsOffset(int parity) {
-  return offsetof(gpu::TessellationTotals, part) + static_cast<std::size_t>(parity) * sizeof(gpu::PartWork) + offsetof(gpu::PartWork, groups);
+  return offsetof(gpu::TessellationTotals, part) + static_cast<std::size_t>(parity) * sizeof(gpu::PartWork) +
+         offsetof(gpu::PartWork, groups);
 }
 constexpr std::size_t kPartSearchGroupsOffset = offsetof(gpu::TessellationTotals, partSearchGroups);
 constexpr std::size_t kRunSearchGroupsOffset = offsetof(gpu::TessellationRun, searchGroups);
@@ -36,8 +37,9 @@ Result<std::unique_ptr<TessellationPass>> TessellationPass::create(const gl::GlA
   if (!layout) return Error{layout.error()};
   auto emit = build("tessellation/tessellation-emit.comp");
   if (!emit) return Error{emit.error()};
-  return std::unique_ptr<TessellationPass>(new TessellationPass(Programs{std::move(*classify), std::move(*dispatch), std::move(*search),
-                                                                         std::move(*decide), std::move(*layout), std::move(*emit)}));
+  return std::unique_ptr<TessellationPass>(
+      new TessellationPass(Programs{std::move(*classify), std::move(*dispatch), std::move(*search), std::move(*decide),
+                                    std::move(*layout), std::move(*emit)}));
 }
 
 std::vector<TessellationPass::PartRuns> TessellationPass::beginRuns(const FrameContext& frame) const {
@@ -84,7 +86,8 @@ void TessellationPass::execute(const FrameContext& frame) {
   const std::vector<PartRuns> parts = beginRuns(frame);
   const TessellationBuffers& buffers = frame.reflections.tessellation();
   const TessellationSettings& settings = frame.settings.tessellation;
-  for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.search, &programs_.decide, &programs_.emit}) {
+  for (const gl::ShaderProgram* program :
+       {&programs_.classify, &programs_.search, &programs_.decide, &programs_.emit}) {
     program->use();
     program->set("crackFree", settings.mode == TessellationMode::CrackFree ? 1 : 0);
     program->set("pixelMetric", settings.metric == TessellationMetric::Pixels ? 1 : 0);
@@ -126,8 +129,8 @@ void TessellationPass::tessellatePart(const FrameContext& frame, const PartRuns&
   const math::Bounds& bounds = frame.worldBounds[mirror.mirrorObject];
   programs_.classify.set("mirrorSphere", glm::vec4(bounds.center(), bounds.radius()));
   programs_.classify.set("everyCornerReflected", mirror.kind == scene::SurfaceKind::Convex ? 0 : 1);
-  for (const gl::ShaderProgram* program : {&programs_.classify, &programs_.dispatch, &programs_.search, &programs_.decide,
-                                           &programs_.emit}) {
+  for (const gl::ShaderProgram* program :
+       {&programs_.classify, &programs_.dispatch, &programs_.search, &programs_.decide, &programs_.emit}) {
     program->use();
     program->set("firstRun", static_cast<unsigned>(part.firstRun));
     program->set("runCount", static_cast<unsigned>(part.runCount));
@@ -142,7 +145,8 @@ void TessellationPass::tessellatePart(const FrameContext& frame, const PartRuns&
     const int parity = round % 2;
     // Working lists ping-pong: round 0 reads the meshes and writes list 0, round r reads list
     // (r − 1) % 2 and writes the other.
-    if (round > 0) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_WORKING_BINDING, buffers.working((round + 1) % 2));
+    if (round > 0)
+      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_WORKING_BINDING, buffers.working((round + 1) % 2));
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_NEXT_WORKING_BINDING, buffers.working(round % 2));
     if (round < maxLevel) {
       dispatchRound(frame, programs_.classify, part, round, Work::Triangles);
@@ -167,8 +171,8 @@ void TessellationPass::tessellatePart(const FrameContext& frame, const PartRuns&
   }
 }
 
-void TessellationPass::dispatchRound(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round,
-                                     Work work) const {
+void TessellationPass::dispatchRound(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part,
+                                     int round, Work work) const {
   const gl::GlApi& gl = frame.gl;
   const TessellationBuffers& buffers = frame.reflections.tessellation();
   program.use();
@@ -176,7 +180,8 @@ void TessellationPass::dispatchRound(const FrameContext& frame, const gl::Shader
   program.set("parity", static_cast<unsigned>(round % 2));
   if (round > 0) {  // one dispatch over the whole part, sized by the last layout
     gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffers.totals());
-    gl.DispatchComputeIndirect(static_cast<GLintptr>(work == Work::Triangles ? partGroupsOffset(round % 2) : kPartSearchGroupsOffset));
+    gl.DispatchComputeIndirect(
+        static_cast<GLintptr>(work == Work::Triangles ? partGroupsOffset(round % 2) : kPartSearchGroupsOffset));
     return;
   }
   // Round 0 reads each run's own mesh: a dispatch per run, over its triangles (known here) or its
@@ -191,10 +196,8 @@ void TessellationPass::dispatchRound(const FrameContext& frame, const gl::Shader
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_MESH_VERTICES_BINDING, frame.meshes.vertexBuffer(mesh));
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TESSELLATION_MESH_INDICES_BINDING, frame.meshes.indexBuffer(mesh));
     frame.setReflectedObject(program, *run.object);
-    if (work == Work::Triangles)
-      gl.DispatchCompute(groupsFor(run.object->triangleCount), 1, 1);
-    else
-      gl.DispatchComputeIndirect(static_cast<GLintptr>(i * sizeof(gpu::TessellationRun) + kRunSearchGroupsOffset));
+    if (work == Work::Triangles) gl.DispatchCompute(groupsFor(run.object->triangleCount), 1, 1);
+    else gl.DispatchComputeIndirect(static_cast<GLintptr>(i * sizeof(gpu::TessellationRun) + kRunSearchGroupsOffset));
   }
 }
 

@@ -41,7 +41,8 @@ class TessellationPass final : public Pass {
   enum class Work { Triangles, Searches };
   // Runs `program` for a round of the part: in round 0 once per run that goes through rounds, over
   // its mesh; later once for the whole part, by the counts the last layout wrote.
-  void dispatchRound(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round, Work work) const;
+  void dispatchRound(const FrameContext& frame, const gl::ShaderProgram& program, const PartRuns& part, int round,
+                     Work work) const;
 
   Programs programs_;
 };

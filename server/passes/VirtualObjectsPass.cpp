@@ -16,7 +16,7 @@ namespace specula::passes {
 namespace {
 // Virtual vertices lie a whole path (eye → mirror → object) away: push the far plane out.
 constexpr float kVirtualFarScale = 3.0f;
-constexpr int kCastTile = 8;        // pixels per side of a ray-cast tile (ray-cast-tiles.comp)
+constexpr int kCastTile = 8;                // pixels per side of a ray-cast tile (ray-cast-tiles.comp)
 constexpr std::size_t kCastTileGroup = 64;  // tiles per work group (ray-cast-tiles.comp)
 // Tile-list entries and nearest-hit pixels of one frame (16 and 32 MiB): parts past either cast
 // every object over all their pixels.
@@ -25,31 +25,35 @@ constexpr std::size_t kNearestHitBudget = std::size_t{8} << 20;
 }  // namespace
 
 Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl::GlApi& gl) {
-  auto objects = gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects.vert", "virtual-objects/virtual-objects.geom",
-                                               "virtual-objects/virtual-objects.frag"});
+  auto objects =
+      gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects.vert", "virtual-objects/virtual-objects.geom",
+                                    "virtual-objects/virtual-objects.frag"});
   if (!objects) return Error{objects.error()};
-  auto tessellated =
-      gl::ShaderProgram::build(gl, {"virtual-objects/virtual-objects-tessellated.vert", "virtual-objects/virtual-objects.frag"});
+  auto tessellated = gl::ShaderProgram::build(
+      gl, {"virtual-objects/virtual-objects-tessellated.vert", "virtual-objects/virtual-objects.frag"});
   if (!tessellated) return Error{tessellated.error()};
   auto region = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/mirror-region.frag"});
   if (!region) return Error{region.error()};
   auto rayCast = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/ray-cast.frag"});
   if (!rayCast) return Error{rayCast.error()};
-  auto rayCastTiles = gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tile.vert", "virtual-objects/ray-cast.frag"});
+  auto rayCastTiles =
+      gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tile.vert", "virtual-objects/ray-cast.frag"});
   if (!rayCastTiles) return Error{rayCastTiles.error()};
   auto classifyTiles = gl::ShaderProgram::build(gl, {"virtual-objects/ray-cast-tiles.comp"});
   if (!classifyTiles) return Error{classifyTiles.error()};
-  auto findUncovered = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/uncovered-pixels.frag"});
+  auto findUncovered =
+      gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/uncovered-pixels.frag"});
   if (!findUncovered) return Error{findUncovered.error()};
-  auto uncoveredPixel = gl::ShaderProgram::build(gl, {"virtual-objects/uncovered-pixel.vert", "virtual-objects/ray-cast.frag"});
+  auto uncoveredPixel =
+      gl::ShaderProgram::build(gl, {"virtual-objects/uncovered-pixel.vert", "virtual-objects/ray-cast.frag"});
   if (!uncoveredPixel) return Error{uncoveredPixel.error()};
-  auto composite = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/reflection-composite.frag"});
+  auto composite =
+      gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/reflection-composite.frag"});
   if (!composite) return Error{composite.error()};
-  return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(gl, std::move(objects.value()), std::move(tessellated.value()),
-                                                                    std::move(region.value()), std::move(rayCast.value()),
-                                                                    std::move(rayCastTiles.value()), std::move(classifyTiles.value()),
-                                                                    std::move(findUncovered.value()), std::move(uncoveredPixel.value()),
-                                                                    std::move(composite.value())));
+  return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(
+      gl, std::move(objects.value()), std::move(tessellated.value()), std::move(region.value()),
+      std::move(rayCast.value()), std::move(rayCastTiles.value()), std::move(classifyTiles.value()),
+      std::move(findUncovered.value()), std::move(uncoveredPixel.value()), std::move(composite.value())));
 }
 
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range,
@@ -83,8 +87,10 @@ void VirtualObjectsPass::drawObjects(const FrameContext& frame, const PlannedMir
     if (!runs[i].rounds) continue;
     tessellated_.use();
     gl.BindVertexArray(emptyVertexArray_.id());
-    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[runs[i].object->object].material], frame.textures);
-    gl.MultiDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(draws + offsetof(gpu::RunDraws, rounds)), rounds, 0);
+    setMaterial(tessellated_, frame.scene.materials[frame.scene.objects[runs[i].object->object].material],
+                frame.textures);
+    gl.MultiDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(draws + offsetof(gpu::RunDraws, rounds)),
+                               rounds, 0);
   }
   gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
@@ -93,11 +99,13 @@ void VirtualObjectsPass::queueStatistics(gl::GpuReadback& readback) {
   std::size_t commands = 0;
   for (const CastPart& part : castParts_) commands += part.tiled ? part.objects.size() : 0;
   castCommands_ = commands;
-  uncoveredHandle_ = readback.copy(uncoveredCounts_.id(), std::max<std::size_t>(plannedParts_, 1) * sizeof(std::uint32_t));
+  uncoveredHandle_ =
+      readback.copy(uncoveredCounts_.id(), std::max<std::size_t>(plannedParts_, 1) * sizeof(std::uint32_t));
   if (commands > 0) castHandle_ = readback.copy(castDraws_.id(), commands * sizeof(DrawCommand));
 }
 
-std::vector<VirtualObjectsPass::PartStatistics> VirtualObjectsPass::readStatistics(const gl::GpuReadback& readback) const {
+std::vector<VirtualObjectsPass::PartStatistics> VirtualObjectsPass::readStatistics(
+    const gl::GpuReadback& readback) const {
   std::vector<PartStatistics> parts(plannedParts_);
   const std::vector<std::uint32_t> uncovered = readback.read<std::uint32_t>(uncoveredHandle_, plannedParts_);
   const std::vector<DrawCommand> draws = readback.read<DrawCommand>(castHandle_, castCommands_);
@@ -116,12 +124,14 @@ std::vector<VirtualObjectsPass::PartStatistics> VirtualObjectsPass::readStatisti
   return parts;
 }
 
-void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const PlannedMirror& planned, std::size_t partIndex) {
+void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const PlannedMirror& planned,
+                                          std::size_t partIndex) {
   const gl::GlApi& gl = frame.gl;
   const PixelRect pixels = framePixels(frame.reflections.coveredFramePixels(planned.slots->layer), frame);
   if (pixels.size().x <= 0 || pixels.size().y <= 0 || planned.reflected.empty()) return;
   // Room for every pixel of the frame after the indirect draw command: kept while the size stays.
-  const GLsizeiptr bytes = static_cast<GLsizeiptr>(sizeof(DrawCommand) + sizeof(std::uint32_t) * reflectionSize_.x * reflectionSize_.y);
+  const GLsizeiptr bytes =
+      static_cast<GLsizeiptr>(sizeof(DrawCommand) + sizeof(std::uint32_t) * reflectionSize_.x * reflectionSize_.y);
   gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, uncovered_.id());
   if (bytes != uncoveredBytes_) {
     gl.BufferData(GL_DRAW_INDIRECT_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
@@ -137,13 +147,15 @@ void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const Plann
     boxes.emplace_back(frame.worldBounds[range->object].high, 0.0f);
   }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, reflectedBoxes_.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4)), boxes.data(), GL_STREAM_DRAW);
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4)), boxes.data(),
+                GL_STREAM_DRAW);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, reflectedBoxes_.id());
 
   // Listed by a draw over the part's stencil into a framebuffer without colour, so that the
   // reflection buffer can be read.
   gl.BindFramebuffer(GL_FRAMEBUFFER, stencilOnly_.id());
-  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, frame.target.depthStencilTexture(), 0);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                          frame.target.depthStencilTexture(), 0);
   const GLenum noColour = GL_NONE;
   gl.DrawBuffers(1, &noColour);
   gl.DepthMask(GL_FALSE);
@@ -158,8 +170,8 @@ void VirtualObjectsPass::rayCastUncovered(const FrameContext& frame, const Plann
   gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   gl.BindBuffer(GL_COPY_WRITE_BUFFER, uncoveredCounts_.id());
-  gl.CopyBufferSubData(GL_DRAW_INDIRECT_BUFFER, GL_COPY_WRITE_BUFFER, 0, static_cast<GLintptr>(partIndex * sizeof(std::uint32_t)),
-                       sizeof(std::uint32_t));
+  gl.CopyBufferSubData(GL_DRAW_INDIRECT_BUFFER, GL_COPY_WRITE_BUFFER, 0,
+                       static_cast<GLintptr>(partIndex * sizeof(std::uint32_t)), sizeof(std::uint32_t));
   gl.DepthMask(GL_TRUE);
   gl.DepthFunc(GL_LESS);
 
@@ -190,7 +202,8 @@ void VirtualObjectsPass::rayCast(const FrameContext& frame, const MirrorSlots& m
   frame.gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void VirtualObjectsPass::setCastRay(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror) {
+void VirtualObjectsPass::setCastRay(const FrameContext& frame, const gl::ShaderProgram& program,
+                                    const MirrorSlots& mirror) {
   ReflectionResources& resources = frame.reflections;
   program.use();
   setGBufferSamplers(program);  // the G-buffer textures are bound by execute()
@@ -201,15 +214,16 @@ void VirtualObjectsPass::setCastRay(const FrameContext& frame, const gl::ShaderP
   // rounding of half floats at the mirror's largest coordinate.
   const float pixelAngle = frame.view.pixelAngle(frame.target.height());
   const float texelsPerPixel = resources.texelsPerPixel();
-  const bool texelPerPixel = std::abs(texelsPerPixel - 1.0f) < 1e-3f;  // pixel centres on texel centres: no interpolation
+  const bool texelPerPixel =
+      std::abs(texelsPerPixel - 1.0f) < 1e-3f;  // pixel centres on texel centres: no interpolation
   program.set("liftPerMetre", texelPerPixel ? 0.0f : 0.5f * pixelAngle / texelsPerPixel);
   const math::Bounds& mirrorBounds = frame.worldBounds[mirror.mirrorObject];
   const float largestCoordinate = glm::compMax(glm::max(glm::abs(mirrorBounds.low), glm::abs(mirrorBounds.high)));
   program.set("lift", frame.plan.gbufferPrecision == GBufferPrecision::Float16 ? largestCoordinate / 2048.0f : 0.0f);
 }
 
-void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program, const MirrorSlots& mirror,
-                                        std::size_t objectIndex) const {
+void VirtualObjectsPass::prepareRayCast(const FrameContext& frame, const gl::ShaderProgram& program,
+                                        const MirrorSlots& mirror, std::size_t objectIndex) const {
   const gl::GlApi& gl = frame.gl;
   const scene::SceneObject& object = frame.scene.objects[objectIndex];
   const ReflectionResources::MeshBvh& bvh = frame.reflections.meshBvh(object.mesh);
@@ -259,7 +273,8 @@ void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
     part.tileExtent = (pixels.high + kCastTile - 1) / kCastTile - part.firstTile;
     part.tileCapacity = static_cast<std::size_t>(part.tileExtent.x) * static_cast<std::size_t>(part.tileExtent.y);
     const std::size_t needed = part.objects.size() * part.tileCapacity;
-    const std::size_t partPixels = static_cast<std::size_t>(pixels.size().x) * static_cast<std::size_t>(pixels.size().y);
+    const std::size_t partPixels =
+        static_cast<std::size_t>(pixels.size().x) * static_cast<std::size_t>(pixels.size().y);
     // A part whose lists or nearest hits would pass their budgets casts every object over all its
     // pixels instead. So does a part of one object: on llvmpipe classifying its tiles costs what
     // the tiles it leaves out would (checker-sphere and quad, one object on a third to half of it).
@@ -283,10 +298,11 @@ void VirtualObjectsPass::classifyCastTiles(const FrameContext& frame) {
   nearestHits_.reserve(gl, static_cast<GLsizeiptr>(pixelCount * sizeof(std::uint32_t)));
   const std::vector<DrawCommand> noTilesYet(spheres.size(), DrawCommand{6, 0, 0, 0});
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, castObjects_.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(spheres.size() * sizeof(glm::vec4)), spheres.data(), GL_STREAM_DRAW);
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, castDraws_.id());
-  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(noTilesYet.size() * sizeof(DrawCommand)), noTilesYet.data(),
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(spheres.size() * sizeof(glm::vec4)), spheres.data(),
                 GL_STREAM_DRAW);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, castDraws_.id());
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(noTilesYet.size() * sizeof(DrawCommand)),
+                noTilesYet.data(), GL_STREAM_DRAW);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, castObjects_.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, castDraws_.id());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, castTileLists_.id());
@@ -366,7 +382,8 @@ void VirtualObjectsPass::bindReflectionBuffer(const FrameContext& frame) {
   }
   gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, reflection_.id(), 0);
-  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, frame.target.depthStencilTexture(), 0);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                          frame.target.depthStencilTexture(), 0);
   gl.Viewport(0, 0, size.x, size.y);
 }
 
@@ -376,7 +393,8 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   plannedParts_ = frame.plan.mirrors.size();
   const std::vector<std::uint32_t> noneYet(plannedParts_, 0);
   gl.BindBuffer(GL_COPY_WRITE_BUFFER, uncoveredCounts_.id());
-  gl.BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(1, plannedParts_) * sizeof(std::uint32_t)),
+  gl.BufferData(GL_COPY_WRITE_BUFFER,
+                static_cast<GLsizeiptr>(std::max<std::size_t>(1, plannedParts_) * sizeof(std::uint32_t)),
                 noneYet.empty() ? nullptr : noneYet.data(), GL_DYNAMIC_READ);
   gl.Disable(GL_FRAMEBUFFER_SRGB);  // linear until the composite writes the frame
   gl.Disable(GL_BLEND);
@@ -409,12 +427,13 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   // frame of many small mirrors does not test the whole frame's stencil once per mirror.
   gl.Enable(GL_SCISSOR_TEST);
   const auto scissorToMirror = [&](std::size_t mirrorObject) {
-    glm::vec4 rect(std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
-                   std::numeric_limits<float>::lowest());
+    glm::vec4 rect(std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                   std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest());
     for (const PlannedMirror& part : frame.plan.mirrors) {
       if (part.slots->mirrorObject != mirrorObject) continue;
       const glm::vec4 covered = frame.reflections.coveredFramePixels(part.slots->layer);
-      rect = glm::vec4(glm::min(glm::vec2(rect), glm::vec2(covered)), glm::max(glm::vec2(rect.z, rect.w), glm::vec2(covered.z, covered.w)));
+      rect = glm::vec4(glm::min(glm::vec2(rect), glm::vec2(covered)),
+                       glm::max(glm::vec2(rect.z, rect.w), glm::vec2(covered.z, covered.w)));
     }
     const PixelRect pixels = framePixels(rect, frame);
     gl.Scissor(pixels.low.x, pixels.low.y, pixels.size().x, pixels.size().y);
@@ -440,9 +459,7 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
     switch (planned.method) {
       case PartMethod::OwnColour:  // the composite adds the background it reflects
         break;
-      case PartMethod::RayCast:
-        rayCastPart(frame, partIndex);
-        break;
+      case PartMethod::RayCast: rayCastPart(frame, partIndex); break;
       case PartMethod::VirtualObjects:
         if (mirror->seesItself) rayCast(frame, *mirror, mirror->mirrorObject);
         drawObjects(frame, planned);

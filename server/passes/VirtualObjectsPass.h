@@ -31,9 +31,9 @@ class VirtualObjectsPass final : public Pass {
   std::vector<PartStatistics> readStatistics(const gl::GpuReadback& readback) const;
 
  private:
-  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated, gl::ShaderProgram region,
-                     gl::ShaderProgram rayCast, gl::ShaderProgram rayCastTiles, gl::ShaderProgram classifyTiles,
-                     gl::ShaderProgram findUncovered, gl::ShaderProgram uncoveredPixel,
+  VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated,
+                     gl::ShaderProgram region, gl::ShaderProgram rayCast, gl::ShaderProgram rayCastTiles,
+                     gl::ShaderProgram classifyTiles, gl::ShaderProgram findUncovered, gl::ShaderProgram uncoveredPixel,
                      gl::ShaderProgram composite)
       : gl_(&gl),
         objects_(std::move(objects)),
@@ -91,7 +91,8 @@ class VirtualObjectsPass final : public Pass {
   void drawObjects(const FrameContext& frame, const PlannedMirror& mirror) const;
   // One reflected object from its own mesh and search slots (objects_ in use); by the
   // DrawElementsIndirectCommand at `indirect` of the bound indirect buffer when given.
-  void drawMesh(const FrameContext& frame, const ReflectionSlotRange& range, std::optional<GLintptr> indirect = std::nullopt) const;
+  void drawMesh(const FrameContext& frame, const ReflectionSlotRange& range,
+                std::optional<GLintptr> indirect = std::nullopt) const;
   template <typename Value>
   void setForBoth(const char* name, const Value& value) const {
     for (const gl::ShaderProgram* program : {&objects_, &tessellated_}) {
@@ -118,27 +119,27 @@ class VirtualObjectsPass final : public Pass {
     std::uint32_t count, instances, first, baseInstance;
   };
   gl::GlFramebuffer stencilOnly_;  // the frame's depth and stencil alone: the uncovered pixels are listed through it
-  gl::GlBuffer uncovered_;  // a DrawCommand and the uncovered pixels of one part (uncovered-pixels.glsl)
+  gl::GlBuffer uncovered_;         // a DrawCommand and the uncovered pixels of one part (uncovered-pixels.glsl)
   GLsizeiptr uncoveredBytes_ = 0;
-  gl::GlBuffer reflectedBoxes_;  // world bounds of the part's reflected objects (uncovered-pixels.frag)
+  gl::GlBuffer reflectedBoxes_;   // world bounds of the part's reflected objects (uncovered-pixels.frag)
   gl::GlBuffer uncoveredCounts_;  // one uint per planned part
   std::size_t plannedParts_ = 0;
   std::size_t uncoveredHandle_ = 0, castHandle_ = 0, castCommands_ = 0;  // queueStatistics()'s copies
-  struct CastPart {  // one planned part's ray cast this frame
-    std::vector<std::size_t> objects;  // in draw order: nearest to the mirror first
-    bool tiled = false;                // false: each object over all the part's pixels
+  struct CastPart {                                                      // one planned part's ray cast this frame
+    std::vector<std::size_t> objects;                                    // in draw order: nearest to the mirror first
+    bool tiled = false;  // false: each object over all the part's pixels
     glm::ivec2 firstTile{0}, tileExtent{0};
-    std::size_t tileCapacity = 0;  // tiles of the part's pixels: each object's list has room for all
-    std::size_t firstObject = 0;   // its objects' first sphere and DrawCommand
-    std::size_t firstEntry = 0;    // its objects' first list entry
+    std::size_t tileCapacity = 0;          // tiles of the part's pixels: each object's list has room for all
+    std::size_t firstObject = 0;           // its objects' first sphere and DrawCommand
+    std::size_t firstEntry = 0;            // its objects' first list entry
     glm::ivec2 pixelLow{0}, pixelHigh{0};  // its pixels, whose nearest hits it keeps
     std::size_t firstHit = 0;              // their first entry in nearestHits_, row by row
   };
   // Sets the uniforms by which `program` finds the part's nearest hits (cast-ray.glsl).
   static void setNearestHits(const gl::ShaderProgram& program, const CastPart& part);
-  std::vector<CastPart> castParts_;  // per planned part
-  gl::GlBuffer castObjects_;    // world bounding spheres of every tiled part's objects
-  gl::GlBuffer castDraws_;      // a DrawCommand per object: two triangles per listed tile
+  std::vector<CastPart> castParts_;    // per planned part
+  gl::GlBuffer castObjects_;           // world bounding spheres of every tiled part's objects
+  gl::GlBuffer castDraws_;             // a DrawCommand per object: two triangles per listed tile
   gl::GlGrowingBuffer castTileLists_;  // per object, room for every tile of its part
   // Per pixel of each tiled part, the nearest hit distance cast so far (float bits), which bounds
   // the traversal of the objects cast after it.

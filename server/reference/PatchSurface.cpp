@@ -13,7 +13,8 @@ PatchSurface::PatchSurface(const std::vector<math::BezierPatch>& objectPatches, 
     for (int j = 0; j < kPiecesPerSide; ++j)
       for (int i = 0; i < kPiecesPerSide; ++i) {
         const glm::dvec2 corner(i * kPiece, j * kPiece);
-        pieces_.push_back({patches_.back().restricted(corner.x, corner.x + kPiece, corner.y, corner.y + kPiece), p, corner});
+        pieces_.push_back(
+            {patches_.back().restricted(corner.x, corner.x + kPiece, corner.y, corner.y + kPiece), p, corner});
       }
     const auto [patchLow, patchHigh] = patches_.back().controlBounds();
     low = glm::min(low, patchLow);
@@ -23,7 +24,8 @@ PatchSurface::PatchSurface(const std::vector<math::BezierPatch>& objectPatches, 
 }
 
 std::optional<PatchSurfaceHit> PatchSurface::intersectPiece(std::size_t piece, const glm::dvec3& origin,
-                                                            const glm::dvec3& direction, double tMin, double tMax) const {
+                                                            const glm::dvec3& direction, double tMin,
+                                                            double tMax) const {
   const Piece& p = pieces_[piece];
   const auto hit = math::intersectPatch(p.bezier, origin, direction, tMin, tMax);
   if (!hit) return std::nullopt;
@@ -34,7 +36,8 @@ bool PatchSurface::meetsBefore(const glm::dvec3& origin, const glm::dvec3& direc
   const glm::dvec3 inverse = 1.0 / direction;
   for (std::size_t piece = 0; piece < pieces_.size(); ++piece) {
     const auto [low, high] = pieceBounds(piece);
-    if (math::rayMeetsBox(low, high, origin, inverse, 0.0, tMax) && intersectPiece(piece, origin, direction, 0.0, tMax)) return true;
+    if (math::rayMeetsBox(low, high, origin, inverse, 0.0, tMax) && intersectPiece(piece, origin, direction, 0.0, tMax))
+      return true;
   }
   return false;
 }

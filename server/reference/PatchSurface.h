@@ -26,10 +26,12 @@ class PatchSurface {
   PatchSurface(const std::vector<math::BezierPatch>& objectPatches, const glm::mat4& objectToWorld);
 
   std::size_t pieceCount() const { return pieces_.size(); }
-  std::pair<glm::dvec3, glm::dvec3> pieceBounds(std::size_t piece) const { return pieces_[piece].bezier.controlBounds(); }
+  std::pair<glm::dvec3, glm::dvec3> pieceBounds(std::size_t piece) const {
+    return pieces_[piece].bezier.controlBounds();
+  }
   // Where the ray meets piece `piece` for t in (tMin, tMax).
-  std::optional<PatchSurfaceHit> intersectPiece(std::size_t piece, const glm::dvec3& origin, const glm::dvec3& direction,
-                                                double tMin, double tMax) const;
+  std::optional<PatchSurfaceHit> intersectPiece(std::size_t piece, const glm::dvec3& origin,
+                                                const glm::dvec3& direction, double tMin, double tMax) const;
   // Whether the ray meets any piece for t in (0, tMax): every piece's box tested, no hierarchy (the
   // ray tracer has Embree's; this serves checks off the render path).
   bool meetsBefore(const glm::dvec3& origin, const glm::dvec3& direction, double tMax) const;
@@ -41,7 +43,7 @@ class PatchSurface {
   struct Piece {
     math::BezierPatch bezier;  // the patch over its piece of [0, 1]²
     std::size_t patch = 0;
-    glm::dvec2 low{0.0};       // the piece's corner in the patch's (u, v); it spans 1 / kPiecesPerSide
+    glm::dvec2 low{0.0};  // the piece's corner in the patch's (u, v); it spans 1 / kPiecesPerSide
   };
   std::vector<math::BezierPatch> patches_;  // world
   std::vector<Piece> pieces_;

@@ -47,7 +47,8 @@ RTCBounds outwardBounds(const glm::dvec3& low, const glm::dvec3& high) {
 }
 
 Ray rayOf(const RTCRayHit& rayHit) {
-  return Ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z}, {rayHit.ray.dir_x, rayHit.ray.dir_y, rayHit.ray.dir_z}};
+  return Ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z},
+             {rayHit.ray.dir_x, rayHit.ray.dir_y, rayHit.ray.dir_z}};
 }
 
 void patchBounds(const RTCBoundsFunctionArguments* args) {
@@ -104,15 +105,14 @@ Result<std::unique_ptr<PosedScene>> PosedScene::build(RTCDevice device, const sc
   // Every record exists before any is attached: analytic geometries keep pointers into them.
   for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
     const scene::SceneObject& object = scene.objects[i];
-    Geometry geometry{i, std::nullopt, nullptr, &scene.meshes[object.mesh], nullptr,
-                      math::normalMatrix(pose.objectToWorld[i])};
+    Geometry geometry{
+        i, std::nullopt, nullptr, &scene.meshes[object.mesh], nullptr, math::normalMatrix(pose.objectToWorld[i])};
     // An open mirror's shape would also cover where the mesh has no surface, so only closed ones use it.
     if (object.mirror && object.mirror->exactQuadric())
       geometry.analytic.emplace(*object.mirror->analytic, pose.objectToWorld[i]);
     else if (!geometry.mesh->patches.empty())
       geometry.patches = std::make_shared<PatchSurface>(geometry.mesh->patches, pose.objectToWorld[i]);
-    else if (geometry.mesh->triangleCount() == 0)
-      continue;
+    else if (geometry.mesh->triangleCount() == 0) continue;
     posed->geometries_.push_back(geometry);
   }
   for (unsigned id = 0; id < posed->geometries_.size(); ++id) {
@@ -212,7 +212,8 @@ SurfaceHit PosedScene::triangleHit(const Geometry& geometry, unsigned primitive,
   // shading.glsl's uvPerMetre: the root of the triangle's area ratio, uv over world.
   const glm::dvec2 uvEdge1 = glm::dvec2(vb.uv) - glm::dvec2(va.uv), uvEdge2 = glm::dvec2(vc.uv) - glm::dvec2(va.uv);
   const double area = glm::length(glm::cross(edge1, edge2));
-  hit.uvPerMetre = area > 0.0 ? static_cast<float>(std::sqrt(std::abs(uvEdge1.x * uvEdge2.y - uvEdge1.y * uvEdge2.x) / area)) : 0.0f;
+  hit.uvPerMetre =
+      area > 0.0 ? static_cast<float>(std::sqrt(std::abs(uvEdge1.x * uvEdge2.y - uvEdge1.y * uvEdge2.x) / area)) : 0.0f;
   return hit;
 }
 

@@ -39,7 +39,8 @@ struct SurfaceHit {
   glm::dvec3 geometricNormal{0.0};  // world, unit: the triangle's winding normal or the quadric's outward one
   glm::dvec3 shadingNormal{0.0};    // world, not unit: interpolated like the rasterizer's, or the exact normal
   glm::vec2 uv{0.0f};
-  float uvPerMetre = 0.0f;  // how fast uv changes across the hit triangle; 0 on exact surfaces (textures at their finest)
+  float uvPerMetre =
+      0.0f;  // how fast uv changes across the hit triangle; 0 on exact surfaces (textures at their finest)
   std::optional<unsigned> analyticGeometry;  // the geometry ID when the hit is on an analytic surface or patches
 };
 
@@ -60,7 +61,7 @@ class PosedScene {
   // What an Embree geometry ID stands for.
   struct Geometry {
     std::uint32_t object = 0;
-    std::optional<AnalyticSurface> analytic;  // set: user geometry; unset: the object's triangle mesh
+    std::optional<AnalyticSurface> analytic;      // set: user geometry; unset: the object's triangle mesh
     std::shared_ptr<const PatchSurface> patches;  // set: user geometry of the mesh's exact patches
     const scene::Mesh* mesh = nullptr;
     const glm::vec3* worldPositions = nullptr;  // Embree's vertex buffer, one per mesh vertex

@@ -48,7 +48,8 @@ struct RayCone {
 glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray, const RayCone& cone, int bounce);
 
 // Linear colour seen along a reflected ray.
-glm::vec3 reflectedColor(const Tracing& tracing, const Ray& ray, const RayCone& cone, int bounce, const Departure* departure) {
+glm::vec3 reflectedColor(const Tracing& tracing, const Ray& ray, const RayCone& cone, int bounce,
+                         const Departure* departure) {
   const auto hit = tracing.posed.intersect(ray, kSeenInMirrors, departure);
   return hit ? shadeHit(tracing, *hit, ray, cone, bounce) : tracing.scene.background;
 }
@@ -58,11 +59,12 @@ glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray
   const scene::SceneObject& object = tracing.scene.objects[hit.object];
   const scene::Material& material = tracing.scene.materials[object.material];
   const double pathLength = cone.travelled + glm::length(hit.position - glm::dvec3(ray.origin));
-  const float footprint = pixelFootprint(static_cast<float>(pathLength), static_cast<float>(cone.eyeDepthPerLength), tracing.pixelAngle,
-                                         static_cast<float>(glm::dot(glm::dvec3(ray.direction), hit.geometricNormal)));
+  const float footprint =
+      pixelFootprint(static_cast<float>(pathLength), static_cast<float>(cone.eyeDepthPerLength), tracing.pixelAngle,
+                     static_cast<float>(glm::dot(glm::dvec3(ray.direction), hit.geometricNormal)));
   // The viewer is where the ray comes from (the eye, or a mirror point), which decides the lit side.
-  const glm::vec3 surface = tracing.shader.shade(material, glm::vec3(hit.position), glm::vec3(hit.shadingNormal), hit.uv,
-                                                 footprint * hit.uvPerMetre, ray.origin);
+  const glm::vec3 surface = tracing.shader.shade(material, glm::vec3(hit.position), glm::vec3(hit.shadingNormal),
+                                                 hit.uv, footprint * hit.uvPerMetre, ray.origin);
   // Past the last bounce a mirror is an ordinary surface, as a rasterized virtual object of it would be.
   if (!object.mirror || material.reflectivity <= 0.0f || bounce >= tracing.maxBounces) return surface;
 
@@ -75,8 +77,8 @@ glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray
   std::optional<Departure> departure;
   if (hit.analyticGeometry)
     departure = Departure{*hit.analyticGeometry, {hit.position, glm::dot(incoming, hit.geometricNormal) < 0.0}};
-  const glm::vec3 mirrored =
-      reflectedColor(tracing, next, {pathLength, cone.eyeDepthPerLength}, bounce + 1, departure ? &*departure : nullptr);
+  const glm::vec3 mirrored = reflectedColor(tracing, next, {pathLength, cone.eyeDepthPerLength}, bounce + 1,
+                                            departure ? &*departure : nullptr);
   return (1.0f - material.reflectivity) * surface + material.reflectivity * mirrored;
 }
 
@@ -125,7 +127,8 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
   if (!posed) return Error{"RayTracer::render(): " + posed.error()};
   const SurfaceShader shader(*scene_);
   const PrimaryRays rays(pose.camera, options.width, options.height);
-  const auto pixelAngle = static_cast<float>(2.0 * std::tan(glm::radians(static_cast<double>(pose.camera.fovYDegrees)) / 2.0) / options.height);
+  const auto pixelAngle = static_cast<float>(
+      2.0 * std::tan(glm::radians(static_cast<double>(pose.camera.fovYDegrees)) / 2.0) / options.height);
   const Tracing tracing{*scene_, **posed, shader, options.maxBounces, pixelAngle};
   const std::span<const glm::vec2> samples = math::samplePattern(options.samples);
 
@@ -145,7 +148,8 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
         const Ray primary{rays.origin(), glm::vec3(direction)};
         const auto hit = tracing.posed.intersect(primary, kSeenDirectly, nullptr);
         if (hit && scene_->objects[hit->object].mirror) ++mirrorSamples;
-        sum += hit ? shadeHit(tracing, *hit, primary, {0.0, glm::dot(direction, rays.forward())}, 0) : scene_->background;
+        sum +=
+            hit ? shadeHit(tracing, *hit, primary, {0.0, glm::dot(direction, rays.forward())}, 0) : scene_->background;
       }
       image.mirrorMask[pixel] = 2 * mirrorSamples > samples.size() ? 1 : 0;
       writeSrgb8(sum / static_cast<float>(samples.size()), &image.rgba[4 * pixel]);

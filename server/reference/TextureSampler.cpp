@@ -25,8 +25,11 @@ int wrapIndex(int i, int size, scene::TextureWrap wrap) {
 }
 
 glm::vec4 texel(const scene::TextureLevel& level, int x, int y) {
-  const std::uint8_t* t = &level.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)) * 4];
-  return {math::srgbByteToLinear(t[0]), math::srgbByteToLinear(t[1]), math::srgbByteToLinear(t[2]), static_cast<float>(t[3]) / 255.0f};
+  const std::uint8_t* t =
+      &level.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)) *
+                  4];
+  return {math::srgbByteToLinear(t[0]), math::srgbByteToLinear(t[1]), math::srgbByteToLinear(t[2]),
+          static_cast<float>(t[3]) / 255.0f};
 }
 
 glm::vec4 bilinear(const scene::Texture& texture, const scene::TextureLevel& level, glm::vec2 uv) {
@@ -39,7 +42,8 @@ glm::vec4 bilinear(const scene::Texture& texture, const scene::TextureLevel& lev
   };
   const int x0 = wrapped(u0, level.width, texture.wrapU), x1 = wrapped(u0 + 1.0, level.width, texture.wrapU);
   const int y0 = wrapped(v0, level.height, texture.wrapV), y1 = wrapped(v0 + 1.0, level.height, texture.wrapV);
-  return glm::mix(glm::mix(texel(level, x0, y0), texel(level, x1, y0), fu), glm::mix(texel(level, x0, y1), texel(level, x1, y1), fu), fv);
+  return glm::mix(glm::mix(texel(level, x0, y0), texel(level, x1, y0), fu),
+                  glm::mix(texel(level, x0, y1), texel(level, x1, y1), fu), fv);
 }
 
 }  // namespace
@@ -47,11 +51,13 @@ glm::vec4 bilinear(const scene::Texture& texture, const scene::TextureLevel& lev
 glm::vec4 sampleTexture(const scene::Texture& texture, glm::vec2 uv, float uvFootprint) {
   const scene::TextureLevel& base = texture.levels.front();
   const float rho = uvFootprint * static_cast<float>(std::max(base.width, base.height));
-  if (!(rho > 1.0f) || texture.levels.size() == 1) return bilinear(texture, base, uv);  // magnified (or NaN): the base level
+  if (!(rho > 1.0f) || texture.levels.size() == 1)
+    return bilinear(texture, base, uv);  // magnified (or NaN): the base level
   const float lod = std::min(std::log2(rho), static_cast<float>(texture.levels.size() - 1));
   const auto fine = static_cast<std::size_t>(lod);
   const std::size_t coarse = std::min(fine + 1, texture.levels.size() - 1);
-  return glm::mix(bilinear(texture, texture.levels[fine], uv), bilinear(texture, texture.levels[coarse], uv), lod - static_cast<float>(fine));
+  return glm::mix(bilinear(texture, texture.levels[fine], uv), bilinear(texture, texture.levels[coarse], uv),
+                  lod - static_cast<float>(fine));
 }
 
 float pixelFootprint(float pathLength, float eyeDepthPerLength, float pixelAngle, float cosine) {

@@ -119,7 +119,8 @@ Result<RenderedFrame> Renderer::render(const scene::ScenePose& pose, int width, 
   if (auto problem = math::sampleCountProblem(samples)) return Error{"cannot render: " + *problem};
   const Clock::time_point start = Clock::now();
   // The planner learns its rates where it chooses (RayCastRule::WhenCheaper), from one-sample frames.
-  const bool learning = settings.rayCast == passes::RayCastRule::WhenCheaper && settings.plan == passes::PlanScope::Needed &&
+  const bool learning = settings.rayCast == passes::RayCastRule::WhenCheaper &&
+                        settings.plan == passes::PlanScope::Needed &&
                         settings.method == passes::ReflectionMethod::Search && samples == 1;
   const passes::MeasuredCosts::FrameRole role = learning ? costs_.nextFrame() : passes::MeasuredCosts::FrameRole{};
   // A frame whose tessellation outgrew its lists is drawn again once they have grown (a few times at
@@ -149,15 +150,18 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
     worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
-  const passes::FramePlan plan = passes::planFrame(slots_, pose, worldBounds, {width, height}, settings, costs_.rates(), role.explore);
+  const passes::FramePlan plan =
+      passes::planFrame(slots_, pose, worldBounds, {width, height}, settings, costs_.rates(), role.explore);
   if (auto problem = passes::planProblem(plan.passes, plan.needs)) return Error{"cannot render: " + *problem};
   if (!plan.mirrors.empty()) {
     const glm::ivec2 margin(static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(width))),
                             static_cast<int>(std::lround(settings.gbufferMargin * static_cast<float>(height))));
-    if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, plan.gbufferPrecision); !status)
+    if (Status status = reflections_.prepare(width, height, margin, settings.gbufferScale, plan.gbufferPrecision);
+        !status)
       return Error{status.error()};
   }
-  const passes::FrameContext frame{gl, *scene_, pose, worldBounds, meshes_, textures_, view, plan, settings, *target_, reflections_};
+  const passes::FrameContext frame{gl,   *scene_, pose,     worldBounds, meshes_,     textures_,
+                                   view, plan,    settings, *target_,    reflections_};
 
   // Stage i runs between marks i and i + 1. Per-pass timing (PassTiming::PerPass): GPU timestamps,
   // or on a CPU rasterizer, which runs a pass's draws only when a later command flushes them
@@ -194,7 +198,8 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
     if (Status status = accumulator_->begin(*target_); !status) return Error{status.error()};
   }
   for (const glm::vec2& point : points) {
-    view.jitterClip = glm::vec2(2.0f * point.x / static_cast<float>(width), -2.0f * point.y / static_cast<float>(height));
+    view.jitterClip =
+        glm::vec2(2.0f * point.x / static_cast<float>(width), -2.0f * point.y / static_cast<float>(height));
     for (passes::PassId pass : plan.passes) {
       passes_[static_cast<std::size_t>(pass)]->execute(frame);
       endStage(passes::passName(pass));
@@ -212,24 +217,39 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
 
   // The frame's statistics are copied out before its image is read and read after it: the image's
   // read is the one wait of the frame (FrameStatistics).
-  const bool virtualObjectsRan = std::find(plan.passes.begin(), plan.passes.end(), passes::PassId::VirtualObjects) != plan.passes.end();
+  const bool virtualObjectsRan =
+      std::find(plan.passes.begin(), plan.passes.end(), passes::PassId::VirtualObjects) != plan.passes.end();
   readback_.begin();
   // The search pass resets the statistics buffer: a frame without it (every mirror ray-cast) searched nothing.
-  const std::size_t searchCopy = plan.search ? readback_.copy(reflections_.statistics(), sizeof(passes::SearchStatistics)) : 0;
+  const std::size_t searchCopy =
+      plan.search ? readback_.copy(reflections_.statistics(), sizeof(passes::SearchStatistics)) : 0;
   const passes::TessellationBuffers& tessellation = reflections_.tessellation();
-  const std::size_t totalsCopy = plan.tessellate ? readback_.copy(tessellation.totals(), sizeof(passes::gpu::TessellationTotals)) : 0;
+  const std::size_t totalsCopy =
+      plan.tessellate ? readback_.copy(tessellation.totals(), sizeof(passes::gpu::TessellationTotals)) : 0;
   const std::size_t midpointCopy =
       plan.tessellate ? readback_.copy(tessellation.midpointStatistics(), sizeof(passes::SearchStatistics)) : 0;
   if (virtualObjectsRan) virtualObjects_->queueStatistics(readback_);
   readback_.fence();
-  RenderedFrame result{width, height, samples, target_->readRgba(), {}, {}, {}, frame.view, {}, plan.gbufferPrecision, {}, {}};
+  RenderedFrame result{width, height,     samples, target_->readRgba(),   {}, {},
+                       {},    frame.view, {},      plan.gbufferPrecision, {}, {}};
   if (!readback_.wait()) return Error{"the GPU did not finish the frame (driver: " + context_.info().renderer + ")"};
   for (const passes::PlannedMirror& mirror : plan.mirrors) {
     if (mirror.slots->part == 0) result.drawnMirrors.push_back(mirror.slots->mirrorObject);
-    MirrorPlanSummary summary{mirror.slots->mirrorObject, mirror.slots->part,   mirror.slots->kind,     mirror.method,
-                              mirror.projectedPixels,     mirror.facesAway,     mirror.reflected.size(), 0,
-                              mirror.culledObjects,       mirror.culledVertices,    mirror.belowBudgetObjects,
-                              mirror.belowBudgetVertices, 0, mirror.cost, {}};
+    MirrorPlanSummary summary{mirror.slots->mirrorObject,
+                              mirror.slots->part,
+                              mirror.slots->kind,
+                              mirror.method,
+                              mirror.projectedPixels,
+                              mirror.facesAway,
+                              mirror.reflected.size(),
+                              0,
+                              mirror.culledObjects,
+                              mirror.culledVertices,
+                              mirror.belowBudgetObjects,
+                              mirror.belowBudgetVertices,
+                              0,
+                              mirror.cost,
+                              {}};
     for (const passes::ReflectionSlotRange* range : mirror.reflected) summary.searchedVertices += range->vertexCount;
     result.plan.push_back(summary);
   }
@@ -244,8 +264,9 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
   if (plan.search) result.search = readback_.read<passes::SearchStatistics>(searchCopy);
   tessellationOutgrown = false;
   if (plan.tessellate) {
-    tessellationOutgrown = reflections_.tessellation().finishFrame(readback_.read<passes::gpu::TessellationTotals>(totalsCopy),
-                                                                   readback_.read<passes::SearchStatistics>(midpointCopy));
+    tessellationOutgrown =
+        reflections_.tessellation().finishFrame(readback_.read<passes::gpu::TessellationTotals>(totalsCopy),
+                                                readback_.read<passes::SearchStatistics>(midpointCopy));
     result.tessellation = tessellation.statistics();
   }
 
@@ -263,7 +284,8 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
   for (std::size_t i = 0; i < stages.size(); ++i) {
     const auto same = [&](const StageTiming& stage) { return stage.name == stages[i]; };
     auto found = std::find_if(result.timings.stages.begin(), result.timings.stages.end(), same);
-    if (found == result.timings.stages.end()) found = result.timings.stages.insert(found, {std::string(stages[i]), 0.0});
+    if (found == result.timings.stages.end())
+      found = result.timings.stages.insert(found, {std::string(stages[i]), 0.0});
     found->milliseconds += times[i + 1] - times[i];
   }
   result.planner.rates = costs_.rates();
@@ -293,7 +315,8 @@ void Renderer::learnCosts(const passes::FramePlan& plan, RenderedFrame& frame) {
   for (const StageTiming& stage : frame.timings.stages) {
     using passes::PassId;
     if (stage.name == passes::passName(PassId::VirtualObjects)) drawing += stage.milliseconds;
-    for (PassId pass : {PassId::GBufferPyramid, PassId::RayHierarchy, PassId::ExplosionMap, PassId::Search, PassId::Tessellation})
+    for (PassId pass :
+         {PassId::GBufferPyramid, PassId::RayHierarchy, PassId::ExplosionMap, PassId::Search, PassId::Tessellation})
       if (stage.name == passes::passName(pass)) searching += stage.milliseconds;
   }
   const double predictedTotal = planner.predicted.search + planner.predicted.rayCast;

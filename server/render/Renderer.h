@@ -42,24 +42,25 @@ struct MirrorPlanSummary {
   scene::SurfaceKind kind = scene::SurfaceKind::Convex;
   passes::PartMethod method = passes::PartMethod::VirtualObjects;
   double projectedPixels = 0.0;  // the mirror's bounds on screen, about: what the method was chosen by
-  bool facesAway = false;  // the eye sees only its back: nothing searched
+  bool facesAway = false;        // the eye sees only its back: nothing searched
   std::size_t searchedObjects = 0, searchedVertices = 0;
   std::size_t culledObjects = 0, culledVertices = 0;
   std::size_t belowBudgetObjects = 0, belowBudgetVertices = 0;  // images smaller than the error budget
   std::size_t uncoveredRayCast = 0;  // pixels no virtual object covered, ray-cast instead (searched parts)
-  passes::PartCost predictedCost;     // what chose between searching and ray-casting
+  passes::PartCost predictedCost;    // what chose between searching and ray-casting
   // Ray-cast parts: the 8×8 tiles its objects were cast on, of objects × the part's tiles.
   passes::CastTileCount castTiles;
 };
 
 struct RenderedFrame {
   int width = 0, height = 0;
-  int samples = 1;  // anti-aliasing: the passes ran once per sample point, their times summed; statistics are the last run's
+  int samples =
+      1;  // anti-aliasing: the passes ran once per sample point, their times summed; statistics are the last run's
   std::vector<std::uint8_t> rgba;  // sRGB, tightly packed, row 0 at the top
   FrameTimings timings;
-  std::vector<std::size_t> drawnMirrors;  // scene object indices of the mirrors searched and drawn
-  passes::SearchStatistics search;  // zero when no mirror was visible
-  passes::FrameView view;           // the camera matrices used (for measuring in pixels)
+  std::vector<std::size_t> drawnMirrors;        // scene object indices of the mirrors searched and drawn
+  passes::SearchStatistics search;              // zero when no mirror was visible
+  passes::FrameView view;                       // the camera matrices used (for measuring in pixels)
   passes::TessellationStatistics tessellation;  // empty when the frame was not tessellated
   // What the G-buffer used: RGBA16F falls back to RGBA32F for mirrors far from the origin.
   passes::GBufferPrecision gbufferPrecision = passes::GBufferPrecision::Float32;
@@ -113,11 +114,14 @@ class Renderer {
   }
   int rayHierarchyTopLevel() const { return reflections_.rayHierarchyTopLevel(); }
   // The last frame's tessellated vertices (midpoints included), when it was tessellated.
-  std::vector<passes::FinishedVertex> readTessellatedVertices() const { return reflections_.tessellation().readFinished(); }
+  std::vector<passes::FinishedVertex> readTessellatedVertices() const {
+    return reflections_.tessellation().readFinished();
+  }
   const passes::ReflectionSlots& reflectionSlots() const { return slots_; }
   // What the patch tessellation makes of the scene's parametric meshes in `frame`'s view (rendered
   // at `pose`): triangles and their areas in pixels. Fails only if the probe's shaders do not build.
-  Result<passes::PatchTessellationMeasure> measurePatchTessellation(const scene::ScenePose& pose, const RenderedFrame& frame);
+  Result<passes::PatchTessellationMeasure> measurePatchTessellation(const scene::ScenePose& pose,
+                                                                    const RenderedFrame& frame);
   const scene::Scene& scene() const { return *scene_; }
   void setPassTiming(PassTiming timing) { passTiming_ = timing; }
   // Every pass, by PassId.
@@ -130,8 +134,9 @@ class Renderer {
                               float aspect) const;
   // One try at render(): `tessellationOutgrown` says the frame's tessellation found its lists too
   // small (they have grown since) and the frame is to be drawn again.
-  Result<RenderedFrame> renderOnce(const scene::ScenePose& pose, int width, int height, const passes::ReflectionSettings& settings,
-                                   int samples, passes::MeasuredCosts::FrameRole role, Clock::time_point start,
+  Result<RenderedFrame> renderOnce(const scene::ScenePose& pose, int width, int height,
+                                   const passes::ReflectionSettings& settings, int samples,
+                                   passes::MeasuredCosts::FrameRole role, Clock::time_point start,
                                    bool& tessellationOutgrown);
   // Teaches costs_ what a measured frame's methods took, from its pass times.
   void learnCosts(const passes::FramePlan& plan, RenderedFrame& frame);
@@ -145,14 +150,14 @@ class Renderer {
   passes::ReflectionResources reflections_;
   PassTable passes_;
   passes::VirtualObjectsPass* virtualObjects_ = nullptr;  // in passes_
-  std::optional<gl::RenderTarget> target_;  // kept while frames keep its size
-  std::optional<SampleAccumulator> accumulator_;  // built on the first anti-aliased frame
-  gl::GpuReadback readback_;                 // the frame's statistics
-  std::vector<gl::GlQuery> stamps_;          // timestamp queries, grown to the longest plan
+  std::optional<gl::RenderTarget> target_;                // kept while frames keep its size
+  std::optional<SampleAccumulator> accumulator_;          // built on the first anti-aliased frame
+  gl::GpuReadback readback_;                              // the frame's statistics
+  std::vector<gl::GlQuery> stamps_;                       // timestamp queries, grown to the longest plan
   PassTiming passTiming_ = PassTiming::PerPass;
-  passes::MeasuredCosts costs_;              // the planner's rates on this device
+  passes::MeasuredCosts costs_;                               // the planner's rates on this device
   std::optional<passes::PatchTessellationProbe> patchProbe_;  // built on first use
-  bool cpuRasterizer_ = false;               // Mesa's software rasterizers: passes are timed by the wall clock
+  bool cpuRasterizer_ = false;  // Mesa's software rasterizers: passes are timed by the wall clock
 };
 
 }  // namespace specula::render

@@ -7,7 +7,8 @@
 namespace specula::render {
 
 Result<SampleAccumulator> SampleAccumulator::create(const gl::GlApi& gl) {
-  auto accumulate = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "sample-accumulation/accumulate.frag"});
+  auto accumulate =
+      gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "sample-accumulation/accumulate.frag"});
   if (!accumulate) return Error{accumulate.error()};
   auto resolve = gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "sample-accumulation/resolve.frag"});
   if (!resolve) return Error{resolve.error()};

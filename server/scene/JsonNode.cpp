@@ -54,9 +54,11 @@ std::string_view JsonNode::oneOf(std::initializer_list<std::string_view> keys) c
 
 std::vector<std::pair<std::string, JsonNode>> JsonNode::members(std::size_t maxSize) const {
   if (!value_->is_object()) fail("expected an object, got " + typeName());
-  if (value_->size() > maxSize) fail("object has " + std::to_string(value_->size()) + " keys; expected at most " + std::to_string(maxSize));
+  if (value_->size() > maxSize)
+    fail("object has " + std::to_string(value_->size()) + " keys; expected at most " + std::to_string(maxSize));
   std::vector<std::pair<std::string, JsonNode>> out;
-  for (auto it = value_->begin(); it != value_->end(); ++it) out.emplace_back(it.key(), JsonNode(it.value(), path_ + keyStep(it.key())));
+  for (auto it = value_->begin(); it != value_->end(); ++it)
+    out.emplace_back(it.key(), JsonNode(it.value(), path_ + keyStep(it.key())));
   return out;
 }
 

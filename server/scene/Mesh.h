@@ -9,7 +9,7 @@
 namespace specula::scene {
 
 struct Vertex {
-  glm::vec3 position{0.0f};       // object space, metres
+  glm::vec3 position{0.0f};            // object space, metres
   glm::vec3 normal{0.0f, 1.0f, 0.0f};  // object space, unit length
   glm::vec2 uv{0.0f};
 };

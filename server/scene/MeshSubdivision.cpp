@@ -35,7 +35,9 @@ bool splitRound(Mesh& mesh, float maxEdgeLength) {
       longEdge[e] = glm::distance(mesh.vertices[v[e]].position, mesh.vertices[v[(e + 1) % 3]].position) > maxEdgeLength;
       count += longEdge[e] ? 1 : 0;
     }
-    const auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { indices.insert(indices.end(), {a, b, c}); };
+    const auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+      indices.insert(indices.end(), {a, b, c});
+    };
     if (count == 0) {
       emit(v[0], v[1], v[2]);
       continue;

@@ -94,7 +94,8 @@ Adjacency adjacencyOf(const Mesh& mesh) {
   std::vector<std::uint32_t> weldOf(mesh.vertices.size());
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const glm::vec3 q = glm::round((mesh.vertices[i].position - low) / cell);
-    const std::array<long long, 3> key{static_cast<long long>(q.x), static_cast<long long>(q.y), static_cast<long long>(q.z)};
+    const std::array<long long, 3> key{static_cast<long long>(q.x), static_cast<long long>(q.y),
+                                       static_cast<long long>(q.z)};
     weldOf[i] = welded.emplace(key, static_cast<std::uint32_t>(welded.size())).first->second;
   }
   // Edge (welded ends, low first) → the triangles using it, with their own vertex at each end.

@@ -22,12 +22,14 @@ struct MirrorParts {
   // largest part), and a vertex may then have more images in one part than the search draws.
   static constexpr std::size_t kMaxParts = 8;
 
-  std::vector<MirrorPart> parts;                // at least one
-  std::vector<std::uint8_t> triangleParts;      // part of each triangle; empty when there is one part
+  std::vector<MirrorPart> parts;            // at least one
+  std::vector<std::uint8_t> triangleParts;  // part of each triangle; empty when there is one part
 
   // Whether a reflected ray leaving this mirror can never meet the mirror again: one convex part of
   // a closed mesh, smoothly connected.
-  bool cannotSeeItself(bool closed) const { return closed && parts.size() == 1 && parts[0].kind == SurfaceKind::Convex; }
+  bool cannotSeeItself(bool closed) const {
+    return closed && parts.size() == 1 && parts[0].kind == SurfaceKind::Convex;
+  }
 
   // `convex` and `concave` declare the whole mesh one part of that kind (the user's word is kept);
   // `mixed` classifies every triangle by the curvature of its vertex normals (convex, concave or

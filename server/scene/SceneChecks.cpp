@@ -21,8 +21,8 @@ std::optional<std::string> meshProblem(const Mesh& mesh) {
   if (mesh.indices.size() % 3 != 0) return where + "index count is not a multiple of 3";
   for (std::size_t i = 0; i < mesh.indices.size(); ++i)
     if (mesh.indices[i] >= mesh.vertices.size())
-      return where + "index " + std::to_string(i) + " refers to vertex " + std::to_string(mesh.indices[i]) +
-             " of " + std::to_string(mesh.vertices.size());
+      return where + "index " + std::to_string(i) + " refers to vertex " + std::to_string(mesh.indices[i]) + " of " +
+             std::to_string(mesh.vertices.size());
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vertex& v = mesh.vertices[i];
     if (!finite(v.position) || !finite(v.normal) || !finite(v.uv))
@@ -31,7 +31,8 @@ std::optional<std::string> meshProblem(const Mesh& mesh) {
   // The renderer finds a triangle's patch from its index: the grid must be exactly parametricMesh's.
   if (!mesh.patches.empty() &&
       (mesh.patchSegments < 1 ||
-       mesh.triangleCount() != mesh.patches.size() * 2 * static_cast<std::size_t>(mesh.patchSegments * mesh.patchSegments)))
+       mesh.triangleCount() !=
+           mesh.patches.size() * 2 * static_cast<std::size_t>(mesh.patchSegments * mesh.patchSegments)))
     return where + "its triangles are not the uniform grid of its " + std::to_string(mesh.patches.size()) +
            " patches; build it with scene::parametricMesh";
   return std::nullopt;
@@ -45,15 +46,18 @@ std::optional<std::string> extrusionMeshProblem(const Mesh& mesh, const math::Ex
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vertex& v = mesh.vertices[i];
     const glm::dvec3 offset = glm::dvec3(v.position) - extrusion.axisPoint;
-    const glm::dvec2 unit(glm::dot(offset, extrusion.u) / extrusion.radii.x, glm::dot(offset, extrusion.v) / extrusion.radii.y);
+    const glm::dvec2 unit(glm::dot(offset, extrusion.u) / extrusion.radii.x,
+                          glm::dot(offset, extrusion.v) / extrusion.radii.y);
     if (std::abs(glm::dot(glm::normalize(glm::dvec3(v.normal)), extrusion.direction)) > kAlongSine)
       return "vertex " + std::to_string(i) + " of mesh '" + mesh.name +
-             "' has a normal along the extrusion (a cap?): an extrusion mirror's mesh is its side only; make caps another "
+             "' has a normal along the extrusion (a cap?): an extrusion mirror's mesh is its side only; make caps "
+             "another "
              "object, and the mirror open with a closed twin";
     const double off = std::abs(glm::length(unit) - 1.0);
     if (off > kOffProfile)
       return "vertex " + std::to_string(i) + " of mesh '" + mesh.name + "' lies " + std::to_string(off) +
-             " of a radius off the declared profile: the extrusion must describe the mirror's mesh (its axis point, direction and radii)";
+             " of a radius off the declared profile: the extrusion must describe the mirror's mesh (its axis point, "
+             "direction and radii)";
   }
   return std::nullopt;
 }
@@ -96,10 +100,11 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
     if (!inUnitRange(m.baseColor)) return "material '" + m.name + "': base colour must be finite and non-negative";
     if (!(m.reflectivity >= 0.0f && m.reflectivity <= 1.0f))
       return "material '" + m.name + "': reflectivity must lie in [0, 1]";
-    if (m.checker && (!inUnitRange(m.checker->oddColor) || !(m.checker->cellsPerUnit > 0.0f) ||
-                      !finite(m.checker->cellsPerUnit)))
+    if (m.checker &&
+        (!inUnitRange(m.checker->oddColor) || !(m.checker->cellsPerUnit > 0.0f) || !finite(m.checker->cellsPerUnit)))
       return "material '" + m.name + "': checker needs a finite colour and cellsPerUnit > 0";
-    if (m.texture && *m.texture >= scene.textures.size()) return "material '" + m.name + "': texture index out of range";
+    if (m.texture && *m.texture >= scene.textures.size())
+      return "material '" + m.name + "': texture index out of range";
   }
   std::size_t texels = 0;
   for (const Texture& texture : scene.textures) {
@@ -126,9 +131,10 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
                                  !finite(o.mirror->analytic->radii)))
         return where + "analytic shape needs a finite centre and positive radii";
       if (const auto& e = o.mirror->extrusion) {
-        const bool orthonormal = std::abs(glm::dot(e->u, e->v)) < 1e-6 && std::abs(glm::dot(e->u, e->direction)) < 1e-6 &&
-                                 std::abs(glm::dot(e->v, e->direction)) < 1e-6 && std::abs(glm::length(e->u) - 1.0) < 1e-6 &&
-                                 std::abs(glm::length(e->v) - 1.0) < 1e-6 && std::abs(glm::length(e->direction) - 1.0) < 1e-6;
+        const bool orthonormal =
+            std::abs(glm::dot(e->u, e->v)) < 1e-6 && std::abs(glm::dot(e->u, e->direction)) < 1e-6 &&
+            std::abs(glm::dot(e->v, e->direction)) < 1e-6 && std::abs(glm::length(e->u) - 1.0) < 1e-6 &&
+            std::abs(glm::length(e->v) - 1.0) < 1e-6 && std::abs(glm::length(e->direction) - 1.0) < 1e-6;
         if (!finite(glm::vec3(e->axisPoint)) || !orthonormal || !(e->radii.x > 0.0 && e->radii.y > 0.0) ||
             !finite(glm::vec3(e->radii, 0.0)))
           return where + "extrusion needs a finite axis point, an orthonormal frame and positive radii";
@@ -140,11 +146,13 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
   }
   if (scene.lights.size() > kMaxLights) return "more than " + std::to_string(kMaxLights) + " lights";
   for (const Light& l : scene.lights) {
-    if (!inUnitRange(l.color) || !finite(l.intensity) || l.intensity < 0.0f) return "light has a bad colour or intensity";
+    if (!inUnitRange(l.color) || !finite(l.intensity) || l.intensity < 0.0f)
+      return "light has a bad colour or intensity";
     if (l.kind == Light::Kind::Directional ? !isUnit(l.vector) : !finite(l.vector))
       return "light direction must be a unit vector (position finite)";
   }
-  if (!inUnitRange(scene.ambient) || !inUnitRange(scene.background)) return "ambient and background must be finite, non-negative";
+  if (!inUnitRange(scene.ambient) || !inUnitRange(scene.background))
+    return "ambient and background must be finite, non-negative";
   if (auto problem = math::cameraProblem(scene.camera)) return "default " + *problem;
 
   for (std::size_t a = 0; a < scene.animations.size(); ++a) {
@@ -158,7 +166,8 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
     };
     if (auto* spin = std::get_if<Spin>(&animation.motion)) {
       if (!animation.object) return where + "spin applies to objects, not the camera";
-      if (!isUnit(spin->axis) || !std::isfinite(spin->degreesPerSecond)) return where + "spin needs a unit axis and a finite rate";
+      if (!isUnit(spin->axis) || !std::isfinite(spin->degreesPerSecond))
+        return where + "spin needs a unit axis and a finite rate";
     } else if (auto* orbit = std::get_if<Orbit>(&animation.motion)) {
       if (!isUnit(orbit->axis) || !finite(orbit->center) || !std::isfinite(orbit->degreesPerSecond))
         return where + "orbit needs a finite centre, a unit axis and a finite rate";
@@ -169,7 +178,8 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
         if (auto problem = transformProblem(key.transform)) return where + *problem;
     } else if (auto* cameraPath = std::get_if<CameraPath>(&animation.motion)) {
       if (animation.object) return where + "a camera path applies to the camera only";
-      if (!keysIncrease(cameraPath->keys)) return where + "keys must be non-empty with finite, strictly increasing times";
+      if (!keysIncrease(cameraPath->keys))
+        return where + "keys must be non-empty with finite, strictly increasing times";
       for (const CameraKey& key : cameraPath->keys)
         if (auto problem = math::cameraProblem(key.camera)) return where + *problem;
     }

@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 // Bounds on lists and tessellation, so no file allocates without limit before the vertex budget applies.
 constexpr std::size_t kMaxEntities = 10000;  // meshes, materials, objects, animations, each
-constexpr std::size_t kMaxKeys = 100000;  // keyframes per path
+constexpr std::size_t kMaxKeys = 100000;     // keyframes per path
 constexpr std::size_t kMaxProfilePoints = 1024;
 constexpr std::int64_t kMaxSegments = 1024;  // grid cells per side, slices, stacks, torus segments
 constexpr std::size_t kMaxIncludes = 64;     // glTF files included, each read whole
@@ -204,8 +204,8 @@ std::vector<math::BezierPatch> readBSpline(const JsonNode& node) {
     std::vector<double> values;
     for (const JsonNode& knot : node.at(key).array(0, 4096 + 4)) values.push_back(knot.number());
     if (values.size() != static_cast<std::size_t>(count + degree + 1))
-      node.at(key).fail("has " + std::to_string(values.size()) + " knots; " + std::to_string(count) + " points of degree " +
-                        std::to_string(degree) + " need " + std::to_string(count + degree + 1));
+      node.at(key).fail("has " + std::to_string(values.size()) + " knots; " + std::to_string(count) +
+                        " points of degree " + std::to_string(degree) + " need " + std::to_string(count + degree + 1));
     return values;
   };
   surface.knotsU = knots("knots_u", surface.count.x, surface.degree.x);
@@ -267,10 +267,12 @@ Mesh readMesh(const JsonNode& node, const fs::path& baseDir, NameIndex& meshes) 
   if (!maxEdge) return mesh;
   if (!mesh.patches.empty())
     maxEdge->fail("a parametric surface's grid is set by \"segments\", not split by \"max_edge\"; drop max_edge");
-  std::optional<Mesh> split = subdivideLongEdges(mesh, static_cast<float>(maxEdge->positive()), kMaxVerticesPerScene / 3);
+  std::optional<Mesh> split =
+      subdivideLongEdges(mesh, static_cast<float>(maxEdge->positive()), kMaxVerticesPerScene / 3);
   if (!split)
-    maxEdge->fail("splitting every edge longer than " + std::to_string(maxEdge->positive()) + " m would make more than " +
-                  std::to_string(kMaxVerticesPerScene / 3) + " triangles; use a larger max_edge");
+    maxEdge->fail("splitting every edge longer than " + std::to_string(maxEdge->positive()) +
+                  " m would make more than " + std::to_string(kMaxVerticesPerScene / 3) +
+                  " triangles; use a larger max_edge");
   return std::move(split).value();
 }
 
@@ -287,10 +289,8 @@ std::uint32_t readTexture(const JsonNode& node, const fs::path& baseDir, Scene& 
   if (!node.isString()) {
     node.expectObject({"file", "wrap"});
     if (const auto mode = node.find("wrap")) {
-      if (mode->string() == "clamp")
-        wrap = TextureWrap::ClampToEdge;
-      else if (mode->string() == "mirror")
-        wrap = TextureWrap::MirroredRepeat;
+      if (mode->string() == "clamp") wrap = TextureWrap::ClampToEdge;
+      else if (mode->string() == "mirror") wrap = TextureWrap::MirroredRepeat;
       else if (mode->string() != "repeat")
         mode->fail("unknown wrap " + JsonNode::quoted(mode->string()) + "; use repeat, clamp or mirror");
     }
@@ -303,14 +303,16 @@ std::uint32_t readTexture(const JsonNode& node, const fs::path& baseDir, Scene& 
   Result<Texture> texture = decodeTexture(*bytes, path->filename().string());
   if (!texture) file.fail(texture.error());
   if ((files.texels += texture->texelCount()) > kMaxTexelsPerScene)
-    file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) + " texels with this one; use smaller images");
+    file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) +
+              " texels with this one; use smaller images");
   texture->wrapU = texture->wrapV = wrap;
   scene.textures.push_back(std::move(texture).value());
   return files.loaded[{*path, wrap}] = static_cast<std::uint32_t>(scene.textures.size() - 1);
 }
 
 // A material; "color" may be left out when a texture gives the colour (it then multiplies white).
-Material readMaterial(const JsonNode& node, NameIndex& materials, const fs::path& baseDir, Scene& scene, TextureFiles& textures) {
+Material readMaterial(const JsonNode& node, NameIndex& materials, const fs::path& baseDir, Scene& scene,
+                      TextureFiles& textures) {
   node.expectObject({"name", "color", "unlit", "checker", "reflectivity", "texture"});
   Material material;
   material.name = materials.add(node.at("name"));
@@ -374,10 +376,8 @@ MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
   // Mixed (the default) lets the renderer split the mesh by its curvature (scene::MirrorParts).
   mirror.curvature = MirrorCurvature::Mixed;
   if (const std::optional<JsonNode> curvature = node.find("curvature")) {
-    if (curvature->string() == "convex")
-      mirror.curvature = MirrorCurvature::Convex;
-    else if (curvature->string() == "concave")
-      mirror.curvature = MirrorCurvature::Concave;
+    if (curvature->string() == "convex") mirror.curvature = MirrorCurvature::Convex;
+    else if (curvature->string() == "concave") mirror.curvature = MirrorCurvature::Concave;
     else if (curvature->string() != "mixed")
       curvature->fail("unknown curvature " + JsonNode::quoted(curvature->string()) + "; use convex, concave or mixed");
   }
@@ -396,7 +396,8 @@ MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
     // The 2-D reduction holds on the outside of a convex profile.
     const std::optional<JsonNode> curvature = node.find("curvature");
     if (curvature && mirror.curvature != MirrorCurvature::Convex)
-      curvature->fail("an extrusion mirror is convex (its profile is an ellipse); drop \"curvature\" or set it to \"convex\"");
+      curvature->fail(
+          "an extrusion mirror is convex (its profile is an ellipse); drop \"curvature\" or set it to \"convex\"");
     mirror.curvature = MirrorCurvature::Convex;
     mirror.extrusion = readExtrusion(*extrusion);
   }
@@ -433,13 +434,16 @@ void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Na
   const JsonNode nameNode = node.at("name");
   const std::string& group = nameNode.string();
   if (group.empty() || group.find('/') != std::string::npos)
-    nameNode.fail("an include's name must be non-empty and without '/' (it prefixes its objects' names: \"" + group + "/...\")");
+    nameNode.fail("an include's name must be non-empty and without '/' (it prefixes its objects' names: \"" + group +
+                  "/...\")");
   const JsonNode file = node.at("file");
   Result<fs::path> path = resolveInside(baseDir, file.string());
   if (!path) file.fail(path.error());
-  if (!isGltfFile(*path)) file.fail("an include is a glTF file (.gltf or .glb), got " + JsonNode::quoted(lowercaseExtension(*path)));
+  if (!isGltfFile(*path))
+    file.fail("an include is a glTF file (.gltf or .glb), got " + JsonNode::quoted(lowercaseExtension(*path)));
   GltfSceneChoice choice;
-  if (const auto index = node.find("scene")) choice.scene = static_cast<std::size_t>(index->integer(0, std::numeric_limits<std::int32_t>::max()));
+  if (const auto index = node.find("scene"))
+    choice.scene = static_cast<std::size_t>(index->integer(0, std::numeric_limits<std::int32_t>::max()));
   if (const auto rule = node.find("mirror_rule")) {
     // {"metallic": at least, "roughness": at most, "materials": {"name": true | false}}
     rule->expectObject({"metallic", "roughness", "materials"});
@@ -452,7 +456,8 @@ void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Na
   Scene& included = imported->scene;
   for (const Texture& texture : included.textures)
     if ((textures.texels += texture.texelCount()) > kMaxTexelsPerScene)
-      file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) + " texels with this file's; use smaller images");
+      file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) +
+                " texels with this file's; use smaller images");
   const auto meshOffset = static_cast<std::uint32_t>(scene.meshes.size());
   const auto materialOffset = static_cast<std::uint32_t>(scene.materials.size());
   const auto textureOffset = static_cast<std::uint32_t>(scene.textures.size());
@@ -599,8 +604,8 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
     for (const JsonNode& node : includes->array(1, kMaxIncludes)) readInclude(node, baseDir, scene, names, textures);
     if (scene.vertexCount() > kMaxVerticesPerScene || scene.triangleCount() > kMaxTrianglesPerScene)
       includes->fail("with its includes the scene draws " + std::to_string(scene.vertexCount()) + " vertices and " +
-                     std::to_string(scene.triangleCount()) + " triangles, more than the limits of " + std::to_string(kMaxVerticesPerScene) +
-                     " and " + std::to_string(kMaxTrianglesPerScene));
+                     std::to_string(scene.triangleCount()) + " triangles, more than the limits of " +
+                     std::to_string(kMaxVerticesPerScene) + " and " + std::to_string(kMaxTrianglesPerScene));
   }
   if (const auto lights = root.find("lights"))
     for (const JsonNode& node : lights->array(0, kMaxLights)) scene.lights.push_back(readLight(node));

@@ -9,7 +9,7 @@
 namespace specula::scene {
 
 struct SceneObject {
-  std::string name;  // unique within a scene
+  std::string name;            // unique within a scene
   std::uint32_t mesh = 0;      // index into Scene::meshes
   std::uint32_t material = 0;  // index into Scene::materials
   math::Transform transform;   // rest pose; animations replace it over time

@@ -33,7 +33,8 @@ math::Transform sample(const TransformPath& path, double t) {
   if (path.keys.size() == 1) return path.keys[0].transform;
   const math::Transform& a = path.keys[i].transform;
   const math::Transform& b = path.keys[i + 1].transform;
-  return {glm::mix(a.translation, b.translation, w), glm::slerp(a.rotation, b.rotation, w), glm::mix(a.scale, b.scale, w)};
+  return {glm::mix(a.translation, b.translation, w), glm::slerp(a.rotation, b.rotation, w),
+          glm::mix(a.scale, b.scale, w)};
 }
 
 math::Camera sample(const CameraPath& path, double t) {

@@ -53,9 +53,7 @@ Result<nlohmann::json> parseStrictJson(std::string_view text) {
         open.pop_back();
         valueDone();
         break;
-      case Event::value:
-        valueDone();
-        break;
+      case Event::value: valueDone(); break;
     }
     return true;
   };

@@ -12,7 +12,9 @@ namespace specula::scene {
 
 namespace {
 
-std::uint8_t toByte(float unit) { return static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(unit, 0.0f, 1.0f))); }
+std::uint8_t toByte(float unit) {
+  return static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(unit, 0.0f, 1.0f)));
+}
 
 // The next level: each texel the average, in linear light, of the texels of `level` it covers (2 or 3 a side).
 TextureLevel halve(const TextureLevel& level) {
@@ -27,12 +29,17 @@ TextureLevel halve(const TextureLevel& level) {
       float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
       for (int sy = y0; sy < y1; ++sy)
         for (int sx = x0; sx < x1; ++sx) {
-          const std::uint8_t* texel = &level.rgba[(static_cast<std::size_t>(sy) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(sx)) * 4];
+          const std::uint8_t* texel =
+              &level.rgba[(static_cast<std::size_t>(sy) * static_cast<std::size_t>(level.width) +
+                           static_cast<std::size_t>(sx)) *
+                          4];
           for (int c = 0; c < 3; ++c) sum[c] += math::srgbByteToLinear(texel[c]);
           sum[3] += static_cast<float>(texel[3]) / 255.0f;
         }
       const float count = static_cast<float>((x1 - x0) * (y1 - y0));
-      std::uint8_t* out = &next.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(next.width) + static_cast<std::size_t>(x)) * 4];
+      std::uint8_t* out = &next.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(next.width) +
+                                      static_cast<std::size_t>(x)) *
+                                     4];
       for (int c = 0; c < 3; ++c) out[c] = toByte(math::linearToSrgb(sum[c] / count));
       out[3] = toByte(sum[3] / count);
     }
@@ -44,7 +51,8 @@ TextureLevel halve(const TextureLevel& level) {
 
 std::size_t Texture::texelCount() const {
   std::size_t count = 0;
-  for (const TextureLevel& level : levels) count += static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height);
+  for (const TextureLevel& level : levels)
+    count += static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height);
   return count;
 }
 
@@ -52,7 +60,8 @@ Texture textureFromPixels(std::string name, int width, int height, std::vector<s
   Texture texture;
   texture.name = std::move(name);
   texture.levels.push_back({width, height, std::move(rgba)});
-  while (texture.levels.back().width > 1 || texture.levels.back().height > 1) texture.levels.push_back(halve(texture.levels.back()));
+  while (texture.levels.back().width > 1 || texture.levels.back().height > 1)
+    texture.levels.push_back(halve(texture.levels.back()));
   return texture;
 }
 
@@ -72,12 +81,15 @@ Result<Texture> decodeTexture(std::string_view bytes, std::string name) {
                  " texels; a texture side must be 1.." + std::to_string(kMaxTextureSide) + ", so scale it down"};
   int decodedWidth = 0, decodedHeight = 0;
   stbi_uc* pixels = stbi_load_from_memory(data, length, &decodedWidth, &decodedHeight, &channels, 4);
-  if (!pixels) return Error{name + ": the image cannot be decoded (" + std::string(stbi_failure_reason()) + "); is it truncated or corrupt?"};
+  if (!pixels)
+    return Error{name + ": the image cannot be decoded (" + std::string(stbi_failure_reason()) +
+                 "); is it truncated or corrupt?"};
   if (decodedWidth != width || decodedHeight != height) {
     stbi_image_free(pixels);
     return Error{name + ": the image's header and its data disagree on its size"};
   }
-  std::vector<std::uint8_t> rgba(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  std::vector<std::uint8_t> rgba(pixels,
+                                 pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   stbi_image_free(pixels);
   return textureFromPixels(std::move(name), width, height, std::move(rgba));
 }

@@ -26,9 +26,9 @@ struct RenderJob {
 
 struct RenderOutput {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;  // sRGB, row 0 at the top
+  std::vector<std::uint8_t> rgba;                       // sRGB, row 0 at the top
   std::vector<std::pair<std::string, double>> stageMs;  // GPU time per stage
-  double renderMs = 0.0;                                 // wall clock
+  double renderMs = 0.0;                                // wall clock
   v1::SearchStatistics search;
   v1::TessellationStatistics tessellation;
   std::vector<v1::MirrorPlan> plan;

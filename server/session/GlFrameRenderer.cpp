@@ -38,7 +38,8 @@ Result<RenderOutput> GlFrameRenderer::render(const RenderJob& job) {
   out.width = frame->width;
   out.height = frame->height;
   out.rgba = std::move(frame->rgba);
-  for (const render::StageTiming& stage : frame->timings.stages) out.stageMs.emplace_back(stage.name, stage.milliseconds);
+  for (const render::StageTiming& stage : frame->timings.stages)
+    out.stageMs.emplace_back(stage.name, stage.milliseconds);
   const passes::SearchStatistics& search = frame->search;
   out.search.set_mirrors(static_cast<std::uint32_t>(frame->drawnMirrors.size()));
   out.search.set_searched(search.searched);

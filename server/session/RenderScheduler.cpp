@@ -24,9 +24,8 @@ Result<std::unique_ptr<RenderScheduler>> RenderScheduler::start(FrameRendererFac
   std::string error;
   {
     std::unique_lock lock(scheduler->mutex_);
-    scheduler->changed_.wait(lock, [&] {
-      return scheduler->renderersReady_ == renderThreads || !scheduler->startupError_.empty();
-    });
+    scheduler->changed_.wait(
+        lock, [&] { return scheduler->renderersReady_ == renderThreads || !scheduler->startupError_.empty(); });
     error = scheduler->startupError_;
   }
   if (!error.empty()) return Error{error};  // the destructor joins the threads
@@ -80,7 +79,8 @@ void RenderScheduler::wake() {
 std::size_t RenderScheduler::waitingSessions() {
   const Clock::time_point now = Clock::now();
   std::lock_guard lock(mutex_);
-  return static_cast<std::size_t>(std::count_if(sessions_.begin(), sessions_.end(), [&](const auto& session) { return session->due(now).now; }));
+  return static_cast<std::size_t>(
+      std::count_if(sessions_.begin(), sessions_.end(), [&](const auto& session) { return session->due(now).now; }));
 }
 
 void RenderScheduler::renderLoop(FrameRendererFactory factory) {
@@ -149,7 +149,8 @@ void RenderScheduler::encodeLoop() {
       encodeQueue_.pop_front();
     }
     const Clock::time_point start = Clock::now();
-    auto jpeg = encoder.encode({job.output->rgba.data(), job.output->width, job.output->height}, job.request.jpegQuality);
+    auto jpeg =
+        encoder.encode({job.output->rgba.data(), job.output->width, job.output->height}, job.request.jpegQuality);
     const double encodeMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     if (!jpeg) {
       job.session->renderFailed(job.request, jpeg.error());

@@ -29,9 +29,9 @@ class RenderScheduler {
 
   void add(std::shared_ptr<Session> session);
   void remove(const Session* session);
-  void wake();  // something changed: look for due sessions again
+  void wake();                    // something changed: look for due sessions again
   std::size_t waitingSessions();  // sessions due a frame now that no worker is rendering yet
-  void stop();  // joins every thread; frames in progress are dropped
+  void stop();                    // joins every thread; frames in progress are dropped
 
  private:
   struct EncodeJob;

@@ -8,12 +8,14 @@ std::string ServiceMetrics::prometheusText() const {
     net::appendPrometheusSample(out, name, type, help, value);
   };
   sample("specula_sessions", "gauge", "Open sessions.", static_cast<double>(sessions.load()));
-  sample("specula_sessions_opened_total", "counter", "Sessions that completed hello.", static_cast<double>(sessionsOpened.load()));
+  sample("specula_sessions_opened_total", "counter", "Sessions that completed hello.",
+         static_cast<double>(sessionsOpened.load()));
   sample("specula_sessions_refused_total", "counter", "Connections refused at the session limit or on shutdown.",
          static_cast<double>(sessionsRefused.load()));
   sample("specula_sessions_resumed_total", "counter", "Sessions restored from a resume token.",
          static_cast<double>(sessionsResumed.load()));
-  sample("specula_resumes_refused_total", "counter", "Resume tokens refused (unknown, expired, altered, another secret or scene).",
+  sample("specula_resumes_refused_total", "counter",
+         "Resume tokens refused (unknown, expired, altered, another secret or scene).",
          static_cast<double>(resumesRefused.load()));
   sample("specula_frames_sent_total", "counter", "Frames written to clients.", static_cast<double>(framesSent.load()));
   sample("specula_frames_skipped_total", "counter", "Frames replaced by a newer one before they were sent.",

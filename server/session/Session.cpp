@@ -19,7 +19,7 @@ using protocol::toGlm;
 using protocol::toProto;
 
 constexpr std::uint32_t kProtocolVersion = 1;
-constexpr float kMaxCoordinate = 1e7f;   // metres; beyond this float positions have no precision left
+constexpr float kMaxCoordinate = 1e7f;  // metres; beyond this float positions have no precision left
 constexpr float kMaxSpeed = 16.0f;
 constexpr double kMaxSceneMs = 1e12;
 
@@ -34,7 +34,6 @@ double millisecondsBetween(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double, std::milli>(to - from).count();
 }
 
-
 std::string checkViewport(std::uint32_t width, std::uint32_t height, const HubOptions& options) {
   if (width < 1 || height < 1 || width > static_cast<std::uint32_t>(options.maxWidth) ||
       height > static_cast<std::uint32_t>(options.maxHeight))
@@ -46,11 +45,7 @@ std::string checkViewport(std::uint32_t width, std::uint32_t height, const HubOp
 }  // namespace
 
 Session::Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, protocol::Encoding encoding)
-    : hub_(hub),
-      encoding_(encoding),
-      id_(randomToken()),
-      number_(nextSessionNumber++),
-      sink_(std::move(sink)) {
+    : hub_(hub), encoding_(encoding), id_(randomToken()), number_(nextSessionNumber++), sink_(std::move(sink)) {
   state_.settings = hub.options().defaults;
 }
 
@@ -168,7 +163,8 @@ void Session::onHello(const v1::Hello& hello, Clock::time_point now) {
       if (hello.resume_token().size() <= 64) restored = hub_.resumeStore().take(hello.resume_token(), now);
       if (!restored)
         refusal = "resume token refused: this instance does not know it (tokens are kept " +
-                  std::to_string(options.resumeLifetime.count()) + " s and resume once; instances share none without --resume-secret-file)";
+                  std::to_string(options.resumeLifetime.count()) +
+                  " s and resume once; instances share none without --resume-secret-file)";
     }
   }
   v1::ServerMessage reply;
@@ -235,7 +231,8 @@ v1::Welcome Session::welcome(bool resumed, Clock::time_point now) const {
 
 Status Session::applyCamera(const v1::CameraUpdate& update) {
   if (!update.has_eye() || !update.has_target()) return Error{"camera: eye and target are required"};
-  for (const auto& [name, vector] : {std::pair{"eye", &update.eye()}, {"target", &update.target()}, {"up", &update.up()}})
+  for (const auto& [name, vector] :
+       {std::pair{"eye", &update.eye()}, {"target", &update.target()}, {"up", &update.up()}})
     if (!finiteWithin(*vector, kMaxCoordinate))
       return Error{std::string("camera: ") + name + " must be finite and within 1e7 m of the origin"};
   std::lock_guard lock(mutex_);
@@ -253,8 +250,8 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
   const scene::Scene& scene = hub_.scene();
   if (!std::isfinite(control.speed()) || std::abs(control.speed()) > kMaxSpeed)
     return Error{"animation: speed must be within [-16, 16]"};
-  if (control.action() == v1::AnimationControl::SEEK && (!std::isfinite(control.time_ms()) ||
-                                                        std::abs(control.time_ms()) > kMaxSceneMs))
+  if (control.action() == v1::AnimationControl::SEEK &&
+      (!std::isfinite(control.time_ms()) || std::abs(control.time_ms()) > kMaxSceneMs))
     return Error{"animation: time_ms must be finite and within ±1e12"};
   if (control.overrides_size() > static_cast<int>(scene.objects.size()))
     return Error{"animation: more overrides than the scene has objects"};
@@ -263,7 +260,8 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
     std::uint32_t index = 0;
     while (index < scene.objects.size() && scene.objects[index].name != item.object()) ++index;
     if (index == scene.objects.size())
-      return Error{"animation: no object named '" + item.object().substr(0, 64) + "' (Welcome.scene.objects lists them)"};
+      return Error{"animation: no object named '" + item.object().substr(0, 64) +
+                   "' (Welcome.scene.objects lists them)"};
     if (item.clear()) {
       changes[index] = std::nullopt;
       continue;
@@ -288,7 +286,8 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
   std::size_t overridden = state_.overrides.size();
   for (const auto& [index, matrix] : changes) overridden += matrix && !state_.overrides.contains(index) ? 1 : 0;
   if (overridden > SignedResume::kMaxOverrides)
-    return Error{"animation: at most " + std::to_string(SignedResume::kMaxOverrides) + " objects can be overridden at once; clear some first"};
+    return Error{"animation: at most " + std::to_string(SignedResume::kMaxOverrides) +
+                 " objects can be overridden at once; clear some first"};
   if (control.speed() != 0.0f) state_.clock.setSpeed(control.speed(), now);
   if (control.action() == v1::AnimationControl::PLAY) state_.clock.play(now);
   if (control.action() == v1::AnimationControl::PAUSE) state_.clock.pause(now);
@@ -364,7 +363,8 @@ FrameRequest Session::takeFrame(Clock::time_point now) {
   return request;
 }
 
-void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> rendered, std::string jpeg, double encodeMs) {
+void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> rendered, std::string jpeg,
+                      double encodeMs) {
   const RenderOutput& output = *rendered;
   const bool reencoded = request.reuse != nullptr;
   const Clock::time_point now = Clock::now();
@@ -403,7 +403,8 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
     if (std::exchange(settingsChanged_, false)) *frame.mutable_settings() = settingsToProto(state_.settings);
-    if (const SignedResume* signedResume = hub_.signedResume()) frame.set_resume_token(signedResume->issue(state_, now, WallClock::now()));
+    if (const SignedResume* signedResume = hub_.signedResume())
+      frame.set_resume_token(signedResume->issue(state_, now, WallClock::now()));
     sink = sink_;
   }
   ServiceMetrics& metrics = hub_.metrics();

@@ -49,7 +49,8 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   };
   Due due(Clock::time_point now) const;
   FrameRequest takeFrame(Clock::time_point now);
-  void deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> output, std::string jpeg, double encodeMs);
+  void deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> output, std::string jpeg,
+               double encodeMs);
   void renderFailed(const FrameRequest& request, const std::string& message);
 
  private:
@@ -60,7 +61,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   Status applySettings(const v1::RenderSettings& settings);
   Status applyResize(const v1::Resize& resize);
   void noteInput(std::uint64_t sequence, double clientTimeMs, Clock::time_point now);  // state_ locked
-  v1::Welcome welcome(bool resumed, Clock::time_point now) const;                     // state_ locked
+  v1::Welcome welcome(bool resumed, Clock::time_point now) const;                      // state_ locked
   void send(const v1::ServerMessage& message);
   void sendError(v1::Error::Code code, const std::string& message);
   void closeForBadMessage(net::CloseCode code, v1::Error::Code errorCode, const std::string& message);
@@ -71,15 +72,15 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   const std::uint64_t number_;  // process-unique, for renderer coherence
   std::string resumeToken_;
 
-  mutable std::mutex mutex_;  // guards everything below
+  mutable std::mutex mutex_;                // guards everything below
   std::shared_ptr<net::MessageSink> sink_;  // null once closed
   bool greeted_ = false;
   SessionState state_;
-  bool dirty_ = false;        // something changed since the last frame started
-  bool busy_ = false;         // a frame is being rendered or encoded
+  bool dirty_ = false;            // something changed since the last frame started
+  bool busy_ = false;             // a frame is being rendered or encoded
   bool settingsChanged_ = false;  // the next frame carries the settings, so clients show what is in effect
   bool lastFrameStill_ = true;
-  std::optional<RenderJob> lastJob_;                  // the last frame delivered and the render it showed
+  std::optional<RenderJob> lastJob_;  // the last frame delivered and the render it showed
   std::shared_ptr<const RenderOutput> lastOutput_;
   bool renderBroken_ = false;  // the last render failed: wait for new input before retrying
   Clock::time_point lastInputAt_{};

@@ -84,12 +84,14 @@ std::string SessionHub::prometheusText() const {
     draining = refusing_;
   }
   std::string out = metrics_.prometheusText();
-  net::appendPrometheusSample(out, "specula_sessions_capacity", "gauge", "Sessions this instance admits (--max-sessions).",
+  net::appendPrometheusSample(out, "specula_sessions_capacity", "gauge",
+                              "Sessions this instance admits (--max-sessions).",
                               static_cast<double>(options_.maxSessions));
-  net::appendPrometheusSample(out, "specula_render_queue_depth", "gauge", "Sessions due a frame that wait for a render worker.",
+  net::appendPrometheusSample(out, "specula_render_queue_depth", "gauge",
+                              "Sessions due a frame that wait for a render worker.",
                               static_cast<double>(scheduler_ ? scheduler_->waitingSessions() : 0));
-  net::appendPrometheusSample(out, "specula_draining", "gauge", "1 while the instance refuses new sessions before it stops.",
-                              draining ? 1.0 : 0.0);
+  net::appendPrometheusSample(out, "specula_draining", "gauge",
+                              "1 while the instance refuses new sessions before it stops.", draining ? 1.0 : 0.0);
   return out;
 }
 

@@ -24,7 +24,7 @@ class Session;
 
 struct HubOptions {
   int maxSessions = 16;
-  int maxWidth = 3840, maxHeight = 2160;  // viewport limits a hello or resize may ask for
+  int maxWidth = 3840, maxHeight = 2160;      // viewport limits a hello or resize may ask for
   std::chrono::milliseconds stillDelay{150};  // quiet time after input before a full-quality still frame
   double maxFps = 60.0;                       // per session
   std::size_t maxMessageBytes = 64 * 1024;    // told to clients in Welcome.limits (net enforces it)

@@ -30,11 +30,12 @@ SessionSetting samples(std::string name, std::string protoField, std::string hel
       counts.push_back(count);
       info.choices.push_back({std::to_string(count), "", ""});
     }
-  return {std::move(info),
-          [member, counts](const SessionSettings& s) {
-            return static_cast<double>(std::find(counts.begin(), counts.end(), s.*member) - counts.begin());
-          },
-          [member, counts](SessionSettings& s, double index) { s.*member = counts.at(static_cast<std::size_t>(index)); }};
+  return {
+      std::move(info),
+      [member, counts](const SessionSettings& s) {
+        return static_cast<double>(std::find(counts.begin(), counts.end(), s.*member) - counts.begin());
+      },
+      [member, counts](SessionSettings& s, double index) { s.*member = counts.at(static_cast<std::size_t>(index)); }};
 }
 
 std::vector<SessionSetting> declareSettings() {
@@ -47,12 +48,15 @@ std::vector<SessionSetting> declareSettings() {
                                     "resolution_scale"),
                       [](const SessionSettings& s) { return static_cast<double>(s.resolutionScale); },
                       [](SessionSettings& s, double value) { s.resolutionScale = static_cast<float>(value); }});
-  settings.push_back(integer("jpeg-quality", "jpeg_quality", "JPEG quality of still frames", 1, 100, &SessionSettings::jpegQuality));
-  settings.push_back(integer("interactive-quality", "interactive_quality", "JPEG quality of frames sent while input arrives", 1, 100,
+  settings.push_back(
+      integer("jpeg-quality", "jpeg_quality", "JPEG quality of still frames", 1, 100, &SessionSettings::jpegQuality));
+  settings.push_back(integer("interactive-quality", "interactive_quality",
+                             "JPEG quality of frames sent while input arrives", 1, 100,
                              &SessionSettings::interactiveQuality));
-  settings.push_back(samples("still-samples", "still_samples", "anti-aliasing of still frames: samples a pixel", &SessionSettings::stillSamples));
-  settings.push_back(samples("interactive-samples", "interactive_samples", "anti-aliasing of frames sent while input arrives",
-                             &SessionSettings::interactiveSamples));
+  settings.push_back(samples("still-samples", "still_samples", "anti-aliasing of still frames: samples a pixel",
+                             &SessionSettings::stillSamples));
+  settings.push_back(samples("interactive-samples", "interactive_samples",
+                             "anti-aliasing of frames sent while input arrives", &SessionSettings::interactiveSamples));
   return settings;
 }
 

@@ -15,11 +15,11 @@ namespace specula::session {
 
 struct SessionSettings {
   passes::ReflectionSettings reflection;
-  float resolutionScale = 1.0f;  // (0, 1]: frames are rendered this much smaller
-  int jpegQuality = 85;          // still frames
-  int interactiveQuality = 60;   // frames sent while input keeps arriving
+  float resolutionScale = 1.0f;                 // (0, 1]: frames are rendered this much smaller
+  int jpegQuality = 85;                         // still frames
+  int interactiveQuality = 60;                  // frames sent while input keeps arriving
   int stillSamples = math::kStillFrameSamples;  // anti-aliasing (math::samplePattern) of still frames
-  int interactiveSamples = 1;                    // and of frames sent while input keeps arriving
+  int interactiveSamples = 1;                   // and of frames sent while input keeps arriving
 };
 
 struct SessionState {

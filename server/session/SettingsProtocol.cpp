@@ -35,7 +35,9 @@ void setNumber(v1::RenderSettings& message, const FieldDescriptor& field, double
   switch (field.cpp_type()) {
     case FieldDescriptor::CPPTYPE_FLOAT: reflection.SetFloat(&message, &field, static_cast<float>(value)); break;
     case FieldDescriptor::CPPTYPE_INT32: reflection.SetInt32(&message, &field, static_cast<int>(value)); break;
-    case FieldDescriptor::CPPTYPE_UINT32: reflection.SetUInt32(&message, &field, static_cast<std::uint32_t>(value)); break;
+    case FieldDescriptor::CPPTYPE_UINT32:
+      reflection.SetUInt32(&message, &field, static_cast<std::uint32_t>(value));
+      break;
     default: break;
   }
 }

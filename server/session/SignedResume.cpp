@@ -16,7 +16,7 @@ namespace specula::session {
 namespace {
 
 constexpr std::string_view kPrefix = "s1.";
-constexpr std::size_t kMacBytes = 32;  // SHA-256
+constexpr std::size_t kMacBytes = 32;   // SHA-256
 constexpr float kMaxCoordinate = 1e7f;  // as a camera message may hold
 constexpr double kMaxSceneMs = 1e12;
 constexpr float kMaxSpeed = 16.0f;
@@ -26,7 +26,8 @@ std::int64_t unixMilliseconds(WallClock::time_point time) {
 }
 
 bool finiteWithin(const glm::vec3& v, float bound) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && glm::all(glm::lessThanEqual(glm::abs(v), glm::vec3(bound)));
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) &&
+         glm::all(glm::lessThanEqual(glm::abs(v), glm::vec3(bound)));
 }
 
 }  // namespace
@@ -44,11 +45,13 @@ std::uint64_t sceneFingerprint(const scene::Scene& scene) {
 
 std::optional<std::string> SignedResume::secretProblem(const std::string& secret) {
   if (secret.size() >= kMinSecretBytes) return std::nullopt;
-  return "the resume secret has " + std::to_string(secret.size()) + " bytes; use at least " + std::to_string(kMinSecretBytes) +
+  return "the resume secret has " + std::to_string(secret.size()) + " bytes; use at least " +
+         std::to_string(kMinSecretBytes) +
          " random bytes, the same on every instance (e.g. head -c 48 /dev/urandom | base64 > resume.secret)";
 }
 
-Result<SignedResume> SignedResume::create(std::string secret, std::chrono::seconds lifetime, const scene::Scene& scene) {
+Result<SignedResume> SignedResume::create(std::string secret, std::chrono::seconds lifetime,
+                                          const scene::Scene& scene) {
   if (auto problem = secretProblem(secret)) return Error{*problem};
   return SignedResume(std::move(secret), lifetime, sceneFingerprint(scene), scene.objects.size());
 }
@@ -56,8 +59,8 @@ Result<SignedResume> SignedResume::create(std::string secret, std::chrono::secon
 std::string SignedResume::mac(std::string_view text) const {
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
-  HMAC(EVP_sha256(), secret_.data(), static_cast<int>(secret_.size()), reinterpret_cast<const unsigned char*>(text.data()), text.size(),
-       digest, &length);
+  HMAC(EVP_sha256(), secret_.data(), static_cast<int>(secret_.size()),
+       reinterpret_cast<const unsigned char*>(text.data()), text.size(), digest, &length);
   return std::string(reinterpret_cast<const char*>(digest), length);
 }
 
@@ -69,7 +72,8 @@ std::string SignedResume::issue(const SessionState& state, Clock::time_point now
   resume.set_width(static_cast<std::uint32_t>(state.width));
   resume.set_height(static_cast<std::uint32_t>(state.height));
   if (state.camera)
-    *resume.mutable_camera() = protocol::cameraUpdate(state.camera->eye, state.camera->target, state.camera->up, state.camera->fovYDegrees);
+    *resume.mutable_camera() =
+        protocol::cameraUpdate(state.camera->eye, state.camera->target, state.camera->up, state.camera->fovYDegrees);
   resume.set_scene_time_ms(state.clock.sceneMs(now));
   resume.set_playing(state.clock.playing() || state.playOnResume);
   resume.set_speed(state.clock.speed());
@@ -103,8 +107,8 @@ Result<SessionState> SignedResume::open(std::string_view token, const SessionSet
   if (!payload || !resume.ParseFromString(*payload)) return Error{malformed};
   if (resume.scene_fingerprint() != fingerprint_) return Error{"resume token refused: it was issued for another scene"};
   if (unixMilliseconds(wallNow) > resume.expires_unix_ms())
-    return Error{"resume token refused: it expired " + std::to_string((unixMilliseconds(wallNow) - resume.expires_unix_ms()) / 1000) +
-                 " s ago"};
+    return Error{"resume token refused: it expired " +
+                 std::to_string((unixMilliseconds(wallNow) - resume.expires_unix_ms()) / 1000) + " s ago"};
 
   // Signed by a holder of the secret, but checked as strictly as a client's messages all the same.
   SessionState state;
@@ -113,20 +117,24 @@ Result<SessionState> SignedResume::open(std::string_view token, const SessionSet
   state.height = static_cast<int>(resume.height());
   if (resume.has_camera()) {
     const v1::CameraUpdate& camera = resume.camera();
-    math::Camera restored{protocol::toGlm(camera.eye()), protocol::toGlm(camera.target()), protocol::toGlm(camera.up()), camera.fov_degrees()};
-    if (!finiteWithin(restored.eye, kMaxCoordinate) || !finiteWithin(restored.target, kMaxCoordinate) || math::cameraProblem(restored))
+    math::Camera restored{protocol::toGlm(camera.eye()), protocol::toGlm(camera.target()), protocol::toGlm(camera.up()),
+                          camera.fov_degrees()};
+    if (!finiteWithin(restored.eye, kMaxCoordinate) || !finiteWithin(restored.target, kMaxCoordinate) ||
+        math::cameraProblem(restored))
       return Error{"resume token refused: its camera is not a valid view"};
     state.camera = restored;
   }
-  if (!std::isfinite(resume.scene_time_ms()) || std::abs(resume.scene_time_ms()) > kMaxSceneMs || !std::isfinite(resume.speed()) ||
-      std::abs(resume.speed()) > kMaxSpeed)
+  if (!std::isfinite(resume.scene_time_ms()) || std::abs(resume.scene_time_ms()) > kMaxSceneMs ||
+      !std::isfinite(resume.speed()) || std::abs(resume.speed()) > kMaxSpeed)
     return Error{"resume token refused: its animation time or speed is out of range"};
   state.clock.setSpeed(resume.speed(), now);
   state.clock.seek(resume.scene_time_ms(), now);
   state.playOnResume = resume.playing();
-  if (static_cast<std::size_t>(resume.overrides_size()) > kMaxOverrides) return Error{"resume token refused: too many overrides"};
+  if (static_cast<std::size_t>(resume.overrides_size()) > kMaxOverrides)
+    return Error{"resume token refused: too many overrides"};
   for (const v1::ResumeOverride& item : resume.overrides()) {
-    if (item.object() >= objects_ || item.object_to_world_size() != 16) return Error{"resume token refused: a malformed object override"};
+    if (item.object() >= objects_ || item.object_to_world_size() != 16)
+      return Error{"resume token refused: a malformed object override"};
     glm::mat4 matrix;
     for (int i = 0; i < 16; ++i) {
       const float value = item.object_to_world(i);

@@ -34,12 +34,16 @@ std::shared_ptr<const scene::Scene> sphereAmongBalls(float distance) {
   scene.name = "sphere-among-balls";
   scene.background = glm::vec3(0.02f, 0.03f, 0.05f);
   scene.lights.push_back(sunLight({1.0f, 2.0f, 1.5f}, 1.0f));
-  const std::uint32_t sphere = addSphereMirror(scene, "mirror", addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 96, 48)),
-                                               addMaterial(scene, perfectMirror("mirror")), 1.0f, placed(glm::vec3(0.0f)));
+  const std::uint32_t sphere =
+      addSphereMirror(scene, "mirror", addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 96, 48)),
+                      addMaterial(scene, perfectMirror("mirror")), 1.0f, placed(glm::vec3(0.0f)));
   scene.objects[sphere].reflected = false;
   const std::uint32_t ball = addMesh(scene, scene::primitives::uvSphere("ball", 0.4f * distance, 48, 24));
-  const std::pair<glm::vec3, std::uint32_t> balls[] = {{{1, 0, 0}, 0xd62728}, {{-1, 0, 0}, 0x2ca02c}, {{0, 1, 0}, 0x1f77b4},
-                                                       {{0, -1, 0}, 0xff7f0e}, {{0, 0, -1}, 0xe0e0e0}};
+  const std::pair<glm::vec3, std::uint32_t> balls[] = {{{1, 0, 0}, 0xd62728},
+                                                       {{-1, 0, 0}, 0x2ca02c},
+                                                       {{0, 1, 0}, 0x1f77b4},
+                                                       {{0, -1, 0}, 0xff7f0e},
+                                                       {{0, 0, -1}, 0xe0e0e0}};
   for (const auto& [direction, colour] : balls)
     addObject(scene, "ball", ball, addMaterial(scene, matte("ball", colour)), placed(direction * distance));
   scene.camera = {{0.6f, 0.8f, 4.0f}, glm::vec3(0.0f), {0.0f, 1.0f, 0.0f}, 40.0f};
@@ -47,7 +51,8 @@ std::shared_ptr<const scene::Scene> sphereAmongBalls(float distance) {
 }
 
 // Mirror mismatch of one frame against the ray tracer.
-double mirrorMismatch(gl::GlContext& gl, std::shared_ptr<const scene::Scene> scene, const passes::ReflectionSettings& settings) {
+double mirrorMismatch(gl::GlContext& gl, std::shared_ptr<const scene::Scene> scene,
+                      const passes::ReflectionSettings& settings) {
   const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
   auto tracer = reference::RayTracer::create(scene);
   EXPECT_TRUE(tracer) << tracer.error();
@@ -116,7 +121,8 @@ TEST(TemporalStability, PerFrameImageChangeInsideTheMirrorTracksTheRayTracer) {
   double worstExcess = 0.0;
   for (int i = 0; i < kFrames; ++i) {
     scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
-    const glm::mat4 swing = glm::rotate(glm::mat4(1.0f), glm::radians(kDegreesPerFrame * static_cast<float>(i)), glm::vec3(0, 1, 0));
+    const glm::mat4 swing =
+        glm::rotate(glm::mat4(1.0f), glm::radians(kDegreesPerFrame * static_cast<float>(i)), glm::vec3(0, 1, 0));
     pose.camera.eye = pose.camera.target + glm::vec3(swing * glm::vec4(pose.camera.eye - pose.camera.target, 0.0f));
     auto truth = (*tracer)->render(pose, {kWidth, kHeight, 1, 0});
     ASSERT_TRUE(truth) << truth.error();

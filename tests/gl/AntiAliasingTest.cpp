@@ -18,7 +18,8 @@ std::shared_ptr<const scene::Scene> whiteBoxOnBlack() {
   scene::Scene scene;
   scene.name = "white-box";
   const std::uint32_t box = scene::builtin::addMesh(scene, scene::primitives::box("box", glm::vec3(1.0f)));
-  scene::builtin::addObject(scene, "box", box, scene::builtin::addMaterial(scene, scene::builtin::emissive("white", 0xffffff)),
+  scene::builtin::addObject(scene, "box", box,
+                            scene::builtin::addMaterial(scene, scene::builtin::emissive("white", 0xffffff)),
                             scene::builtin::placed(glm::vec3(0.0f), 20.0f));
   scene.camera = {{1.3f, 1.1f, 4.0f}, glm::vec3(0.0f), {0.0f, 1.0f, 0.0f}, 40.0f};
   return std::make_shared<const scene::Scene>(std::move(scene));
@@ -75,8 +76,9 @@ TEST(AntiAliasing, MirrorFramesMatchTheRayTracerAtTheSameSamples) {
       ASSERT_TRUE(frame) << frame.error();
       EXPECT_EQ(frame->samples, 4);
       const auto mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame);
-      std::printf("%s %s: mirror mismatch %.3f %% of %zu px\n", name, settings.rayCast == passes::RayCastRule::Never ? "searched" : "default",
-                  100.0 * mismatch.share, mismatch.mirrorPixels);
+      std::printf("%s %s: mirror mismatch %.3f %% of %zu px\n", name,
+                  settings.rayCast == passes::RayCastRule::Never ? "searched" : "default", 100.0 * mismatch.share,
+                  mismatch.mirrorPixels);
       EXPECT_GT(mismatch.mirrorPixels, 2000u);
       EXPECT_LE(mismatch.share, 0.01) << name;
     }

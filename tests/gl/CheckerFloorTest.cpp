@@ -100,14 +100,17 @@ TEST_P(CheckerFloorTest, FloorAndBackgroundMatchRayPlaneExpectationPixelByPixel)
 TEST_P(CheckerFloorTest, ReportsEveryStageTimeAndRefusesImpossibleSizes) {
   auto context = gl::GlContext::create(GetParam());
   ASSERT_TRUE(context) << context.error();
-  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere")));
+  auto renderer = render::Renderer::create(
+      **context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere")));
   ASSERT_TRUE(renderer) << renderer.error();
   const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), 1.5);
   // Searched, the sphere runs every pass; at 64×48 the planner ray-casts it and runs no search.
   for (const auto& [settings, expected] :
-       {std::pair{specula::testing::virtualObjects(), std::vector<std::string>{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search",
-                                                                      "tessellation", "virtual-objects", "readback"}},
-        std::pair{passes::ReflectionSettings{}, std::vector<std::string>{"scene", "mirror-gbuffer", "virtual-objects", "readback"}}}) {
+       {std::pair{specula::testing::virtualObjects(),
+                  std::vector<std::string>{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search", "tessellation",
+                                           "virtual-objects", "readback"}},
+        std::pair{passes::ReflectionSettings{},
+                  std::vector<std::string>{"scene", "mirror-gbuffer", "virtual-objects", "readback"}}}) {
     auto frame = (*renderer)->render(pose, 64, 48, settings);
     ASSERT_TRUE(frame) << frame.error();
     std::vector<std::string> names;
@@ -130,7 +133,8 @@ TEST_P(CheckerFloorTest, ReportsEveryStageTimeAndRefusesImpossibleSizes) {
 TEST_P(CheckerFloorTest, SameTimeRendersIdenticalPixels) {
   auto context = gl::GlContext::create(GetParam());
   ASSERT_TRUE(context) << context.error();
-  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere")));
+  auto renderer = render::Renderer::create(
+      **context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("checker-sphere")));
   ASSERT_TRUE(renderer) << renderer.error();
   const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), 2.25);
   auto first = (*renderer)->render(pose, 96, 64);

@@ -15,7 +15,8 @@ using namespace specula;
 
 namespace {
 
-passes::ReflectionSettings explosionMap(int side, bool refine, passes::VirtualPixels pixels = passes::VirtualPixels::ExactHit,
+passes::ReflectionSettings explosionMap(int side, bool refine,
+                                        passes::VirtualPixels pixels = passes::VirtualPixels::ExactHit,
                                         bool mirrorPlacement = false) {
   passes::ReflectionSettings settings = specula::testing::withSearch(passes::SearchStrategy::ExplosionMap);
   settings.explosionMapSize = side;
@@ -95,8 +96,8 @@ TEST(ExplosionMap, UnrefinedLookUpsStayWithinTheirMeasuredBound) {
     std::vector<double> p99;
     for (int side : {128, 256, 512}) {
       const PointErrors errors = pointErrors(sceneName, explosionMap(side, false));
-      std::printf("%s, explosion map %d: %zu points, error p50 %.2f px, p99 %.2f px, %.2f look-ups a vertex\n", sceneName, side,
-                  errors.measured, errors.p50, errors.p99, errors.meanSteps);
+      std::printf("%s, explosion map %d: %zu points, error p50 %.2f px, p99 %.2f px, %.2f look-ups a vertex\n",
+                  sceneName, side, errors.measured, errors.p50, errors.p99, errors.meanSteps);
       EXPECT_GT(errors.measured, 600u);
       EXPECT_LE(errors.meanSteps, 2.0) << "two look-ups a vertex (near and far), one for a hidden one";
       EXPECT_LE(errors.p50, 5.0) << sceneName << " " << side;
@@ -143,10 +144,11 @@ TEST(ExplosionMap, RefinedLookUpsAreAsExactAsTheCrosshairSearchAndStartCloser) {
     cold.coherence = false;
     const PointErrors crosshair = pointErrors(sceneName, cold);
     const PointErrors refined = pointErrors(sceneName, explosionMap(256, true));
-    std::printf("%s: crosshair (cold) p99 %.4f px, %.2f steps; refined explosion map p99 %.4f px, %.2f steps\n", sceneName,
-                crosshair.p99, crosshair.meanSteps, refined.p99, refined.meanSteps);
+    std::printf("%s: crosshair (cold) p99 %.4f px, %.2f steps; refined explosion map p99 %.4f px, %.2f steps\n",
+                sceneName, crosshair.p99, crosshair.meanSteps, refined.p99, refined.meanSteps);
     EXPECT_LE(refined.p99, std::max(1.5 * crosshair.p99, 1e-3)) << sceneName;
-    EXPECT_LT(refined.meanSteps, crosshair.meanSteps) << sceneName << ": the map's point is a closer start than the pyramid";
+    EXPECT_LT(refined.meanSteps, crosshair.meanSteps)
+        << sceneName << ": the map's point is a closer start than the pyramid";
   }
 }
 
@@ -156,12 +158,15 @@ TEST(ExplosionMap, RefinedLookUpsAreAsExactAsTheCrosshairSearchAndStartCloser) {
 // mirrored, 4.4 px (p99 10.7) on the eye's ray.
 TEST(ExplosionMap, EyeRayPlacementKeepsVirtualVerticesWhereTheMapsPointIs) {
   const std::vector<double> eyeRay = virtualVertexOffsets(explosionMap(256, false));
-  const std::vector<double> mirrored = virtualVertexOffsets(explosionMap(256, false, passes::VirtualPixels::ExactHit, true));
+  const std::vector<double> mirrored =
+      virtualVertexOffsets(explosionMap(256, false, passes::VirtualPixels::ExactHit, true));
   ASSERT_GT(eyeRay.size(), 200u);
   ASSERT_EQ(eyeRay.size(), mirrored.size());
-  const auto at = [](const std::vector<double>& sorted, double p) { return sorted[static_cast<std::size_t>(p * static_cast<double>(sorted.size() - 1))]; };
-  std::printf("virtual vertices on screen: eye-ray p50 %.1f p99 %.1f px; mirrored (the paper) p50 %.1f p99 %.1f px\n", at(eyeRay, 0.5),
-              at(eyeRay, 0.99), at(mirrored, 0.5), at(mirrored, 0.99));
+  const auto at = [](const std::vector<double>& sorted, double p) {
+    return sorted[static_cast<std::size_t>(p * static_cast<double>(sorted.size() - 1))];
+  };
+  std::printf("virtual vertices on screen: eye-ray p50 %.1f p99 %.1f px; mirrored (the paper) p50 %.1f p99 %.1f px\n",
+              at(eyeRay, 0.5), at(eyeRay, 0.99), at(mirrored, 0.5), at(mirrored, 0.99));
   EXPECT_LE(at(eyeRay, 0.5), 5.0);
   EXPECT_LE(at(eyeRay, 0.99), 12.0);
   EXPECT_GT(at(mirrored, 0.5), 4.0 * at(eyeRay, 0.5)) << "the paper's placement is what magnifies the error";
@@ -181,7 +186,8 @@ TEST(ExplosionMap, FramesAgreeWithTheRayTracerWithinTheMapsBound) {
     std::map<std::string, double> mismatch;
     for (const auto& [name, settings] :
          {std::pair{"crosshair", specula::testing::virtualObjects()},
-          std::pair{"crosshair as placed", [] {
+          std::pair{"crosshair as placed",
+                    [] {
                       passes::ReflectionSettings placed = specula::testing::virtualObjects();
                       placed.virtualPixels = passes::VirtualPixels::AsPlaced;
                       return placed;
@@ -192,8 +198,9 @@ TEST(ExplosionMap, FramesAgreeWithTheRayTracerWithinTheMapsBound) {
       ASSERT_TRUE(frame) << frame.error();
       mismatch[name] = specula::testing::mismatchAgainstRayTracer(truth, pose, *frame).share;
     }
-    std::printf("%s mirror mismatch: crosshair %.4f (as placed %.4f), explosion map as placed %.4f, refined %.4f\n", sceneName,
-                mismatch["crosshair"], mismatch["crosshair as placed"], mismatch["explosion map as placed"], mismatch["explosion map refined"]);
+    std::printf("%s mirror mismatch: crosshair %.4f (as placed %.4f), explosion map as placed %.4f, refined %.4f\n",
+                sceneName, mismatch["crosshair"], mismatch["crosshair as placed"], mismatch["explosion map as placed"],
+                mismatch["explosion map refined"]);
     EXPECT_LE(mismatch["explosion map as placed"], 0.18) << sceneName;
     EXPECT_LE(mismatch["crosshair as placed"], 0.03) << sceneName;
     EXPECT_LE(mismatch["explosion map refined"], mismatch["crosshair"] + 0.002) << sceneName;

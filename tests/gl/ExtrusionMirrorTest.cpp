@@ -45,17 +45,19 @@ Measured measure(const std::shared_ptr<const scene::Scene>& scene, const passes:
     measured.coldStarts += frame->search.coldStarts;
     measured.searched += frame->search.searched;
     measured.hidden += frame->search.hidden;
-    for (const render::StageTiming& stage : frame->timings.stages) measured.pyramidBuilt |= stage.name == "gbuffer-pyramid";
+    for (const render::StageTiming& stage : frame->timings.stages)
+      measured.pyramidBuilt |= stage.name == "gbuffer-pyramid";
     const auto mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame);
     measured.worstMismatch = std::max(measured.worstMismatch, mismatch.share);
   }
-  std::printf("%zu points: p50 %.4f px, p99 %.4f px, max %.4f px; hidden disagreements %d/%d (%d near the silhouette); "
-              "steps %llu over %llu vertices, %llu hidden; worst mirror mismatch %.3f %%\n",
-              measured.points.pixels.size(), measured.points.percentile(0.5), measured.points.percentile(0.99),
-              measured.points.percentile(1.0), measured.points.exactHiddenButSearchVisible,
-              measured.points.searchHiddenButExactVisible, measured.points.searchHiddenNearSilhouette,
-              static_cast<unsigned long long>(measured.steps), static_cast<unsigned long long>(measured.searched),
-              static_cast<unsigned long long>(measured.hidden), 100.0 * measured.worstMismatch);
+  std::printf(
+      "%zu points: p50 %.4f px, p99 %.4f px, max %.4f px; hidden disagreements %d/%d (%d near the silhouette); "
+      "steps %llu over %llu vertices, %llu hidden; worst mirror mismatch %.3f %%\n",
+      measured.points.pixels.size(), measured.points.percentile(0.5), measured.points.percentile(0.99),
+      measured.points.percentile(1.0), measured.points.exactHiddenButSearchVisible,
+      measured.points.searchHiddenButExactVisible, measured.points.searchHiddenNearSilhouette,
+      static_cast<unsigned long long>(measured.steps), static_cast<unsigned long long>(measured.searched),
+      static_cast<unsigned long long>(measured.hidden), 100.0 * measured.worstMismatch);
   return measured;
 }
 
@@ -85,9 +87,11 @@ TEST(ExtrusionMirror, SolvedCylinderIsExactWithoutSearching) {
 
 TEST(ExtrusionMirror, TiltedEllipticCylinderFromASceneFileIsExactToo) {
   // Rotated and scaled by (1, 1, 0.7): in the world an elliptic cylinder the solver gets per frame.
-  auto loaded = scene::loadSceneFile(std::filesystem::path(SPECULA_TEST_DATA_DIR) / "scenes" / "good" / "cylinder.json");
+  auto loaded =
+      scene::loadSceneFile(std::filesystem::path(SPECULA_TEST_DATA_DIR) / "scenes" / "good" / "cylinder.json");
   ASSERT_TRUE(loaded) << loaded.error();
-  expectSolvedExactly(measure(std::make_shared<const scene::Scene>(std::move(*loaded)), specula::testing::virtualObjects()));
+  expectSolvedExactly(
+      measure(std::make_shared<const scene::Scene>(std::move(*loaded)), specula::testing::virtualObjects()));
 }
 
 class ExtrusionMirrorSearch : public ::testing::TestWithParam<passes::SearchStrategy> {};

@@ -25,14 +25,17 @@ TEST(FrameResources, FramesOfOneSizeCreateNoGlObjects) {
     const char* scene;
     passes::ReflectionSettings settings;
   };
-  for (const auto& [sceneName, settings] : {Case{"kitchen", specula::testing::virtualObjects()}, Case{"kitchen", {}}, Case{"utah-teapot", {}}}) {
+  for (const auto& [sceneName, settings] :
+       {Case{"kitchen", specula::testing::virtualObjects()}, Case{"kitchen", {}}, Case{"utah-teapot", {}}}) {
     SCOPED_TRACE(std::string(sceneName) + (settings.rayCast == passes::RayCastRule::Never ? " searched" : " planned"));
     Rig rig = makeRig(sceneName);
     ASSERT_TRUE(rig.renderer);
     const scene::Scene& scene = rig.renderer->scene();
-    for (int i = 0; i < 2; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));
+    for (int i = 0; i < 2; ++i)
+      ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));
     const std::uint64_t before = gl::glObjectsCreated.load();
-    for (int i = 2; i < 6; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));
+    for (int i = 2; i < 6; ++i)
+      ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, settings));
     EXPECT_EQ(gl::glObjectsCreated.load(), before) << "render targets, buffers and queries are kept between frames";
     ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 1.0), 256, 192, settings));
     EXPECT_GT(gl::glObjectsCreated.load(), before) << "a new size needs new targets";
@@ -64,7 +67,8 @@ TEST(FrameResources, PassTimesAccountForTheFrame) {
   EXPECT_LE(sum, frame->timings.totalMilliseconds * 1.001);
   if (rig.context->info().renderer.find("llvmpipe") != std::string::npos) {
     EXPECT_GE(sum, 0.8 * frame->timings.totalMilliseconds) << "the passes account for the frame";
-    EXPECT_GT(stages.front().milliseconds, 0.05 * sum) << "the scene pass's raster work is its own, not the next pass's";
+    EXPECT_GT(stages.front().milliseconds, 0.05 * sum)
+        << "the scene pass's raster work is its own, not the next pass's";
   }
 }
 

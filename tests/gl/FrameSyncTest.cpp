@@ -18,8 +18,11 @@ namespace {
 
 // Calls that make the CPU wait for the GPU, by entry point.
 struct Waits {
-  int readPixels = 0, textureReads = 0, bufferReads = 0, mapsForReading = 0, finishes = 0, fenceWaits = 0, queryResults = 0;
-  int besidesTheImage() const { return textureReads + bufferReads + mapsForReading + finishes + fenceWaits + queryResults; }
+  int readPixels = 0, textureReads = 0, bufferReads = 0, mapsForReading = 0, finishes = 0, fenceWaits = 0,
+      queryResults = 0;
+  int besidesTheImage() const {
+    return textureReads + bufferReads + mapsForReading + finishes + fenceWaits + queryResults;
+  }
 };
 
 Waits waits;
@@ -89,14 +92,16 @@ TEST(FrameSync, ASearchedTessellatedFrameWaitsOnlyToReadItsImage) {
     const scene::Scene& scene = rig.renderer->scene();
     const passes::ReflectionSettings searched = specula::testing::virtualObjects();
     // The first frames size the lists and the statistics' staging buffer.
-    for (int i = 0; i < 2; ++i) ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, searched));
+    for (int i = 0; i < 2; ++i)
+      ASSERT_TRUE(rig.renderer->render(scene::ScenePose::at(scene, 0.1 * i), 320, 240, searched));
     WaitCounter counter(*rig.context);
     auto frame = rig.renderer->render(scene::ScenePose::at(scene, 0.2), 320, 240, searched);
     ASSERT_TRUE(frame) << frame.error();
     EXPECT_EQ(waits.readPixels, 1) << "the image";
-    EXPECT_EQ(waits.besidesTheImage(), 0) << "buffer reads " << waits.bufferReads << ", texture reads " << waits.textureReads
-                                          << ", maps " << waits.mapsForReading << ", glFinish " << waits.finishes
-                                          << ", fence waits " << waits.fenceWaits << ", query results " << waits.queryResults;
+    EXPECT_EQ(waits.besidesTheImage(), 0)
+        << "buffer reads " << waits.bufferReads << ", texture reads " << waits.textureReads << ", maps "
+        << waits.mapsForReading << ", glFinish " << waits.finishes << ", fence waits " << waits.fenceWaits
+        << ", query results " << waits.queryResults;
     // What the frame did still arrives with it.
     EXPECT_GT(frame->search.searched, 0u);
     EXPECT_GE(frame->tessellation.trianglesPerRound.size(), 2u) << "something split";

@@ -25,8 +25,9 @@ TEST(GltfScene, ChromeSphereFromAGlbReflectsLikeTheRayTracer) {
     auto frame = rig.renderer->render(pose, 320, 240, settings);
     ASSERT_TRUE(frame) << frame.error();
     const auto mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame);
-    std::printf("%s: %zu mirror pixels, mismatch %.3f %%\n", settings.rayCast == passes::RayCastRule::Never ? "searched" : "default",
-                mismatch.mirrorPixels, 100.0 * mismatch.share);
+    std::printf("%s: %zu mirror pixels, mismatch %.3f %%\n",
+                settings.rayCast == passes::RayCastRule::Never ? "searched" : "default", mismatch.mirrorPixels,
+                100.0 * mismatch.share);
     EXPECT_GT(mismatch.mirrorPixels, 3000u) << "the sphere fills a good part of the frame";
     EXPECT_LE(mismatch.share, 0.01);
   }

@@ -29,23 +29,26 @@ enum class Surface { Exact, Mesh, Extrusion };
 // A unit sphere mirror centred at `centre` and one reflected object whose vertices are given relative
 // to that centre (placed there, as a modeller places a local mesh far from the origin).
 std::shared_ptr<const scene::Scene> sphereAndObject(const glm::vec3& centre, const std::vector<glm::vec3>& positions,
-                                                    std::vector<std::uint32_t> indices, Surface surface = Surface::Exact) {
+                                                    std::vector<std::uint32_t> indices,
+                                                    Surface surface = Surface::Exact) {
   scene::Scene scene;
   scene.name = "hard-case";
   scene.lights.push_back(sunLight({1.0f, 2.0f, 1.0f}, 1.0f));
   if (surface == Surface::Extrusion) {
     constexpr float kHeight = 6.0f;
     const math::Transform foot = placed(centre - glm::vec3(0.0f, 0.5f * kHeight, 0.0f));
-    const std::uint32_t tube = addObject(scene, "mirror", addMesh(scene, scene::primitives::cylinder("mirror", 1.0f, kHeight, 96, false)),
-                                         addMaterial(scene, perfectMirror("mirror")), foot);
+    const std::uint32_t tube =
+        addObject(scene, "mirror", addMesh(scene, scene::primitives::cylinder("mirror", 1.0f, kHeight, 96, false)),
+                  addMaterial(scene, perfectMirror("mirror")), foot);
     scene::MirrorInfo& info = scene.objects[tube].mirror.emplace();
     info.closed = false;
     info.closedTwinMesh = addMesh(scene, scene::primitives::cylinder("mirror-closed", 1.0f, kHeight, 96, true));
     info.extrusion = math::Extrusion::along(glm::dvec3(0.0), {0.0, 1.0, 0.0}, glm::dvec2(1.0));
     scene.objects[tube].reflected = false;
   } else {
-    const std::uint32_t sphere = addSphereMirror(scene, "mirror", addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 96, 48)),
-                                                 addMaterial(scene, perfectMirror("mirror")), 1.0f, placed(centre));
+    const std::uint32_t sphere =
+        addSphereMirror(scene, "mirror", addMesh(scene, scene::primitives::uvSphere("mirror", 1.0f, 96, 48)),
+                        addMaterial(scene, perfectMirror("mirror")), 1.0f, placed(centre));
     scene.objects[sphere].reflected = false;
     scene.objects[sphere].mirror->analytic->exactSurface = surface == Surface::Exact;
   }
@@ -53,14 +56,16 @@ std::shared_ptr<const scene::Scene> sphereAndObject(const glm::vec3& centre, con
   mesh.name = "object";
   for (const glm::vec3& p : positions) mesh.vertices.push_back({p, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec2(0.0f)});
   mesh.indices = std::move(indices);
-  addObject(scene, "object", addMesh(scene, std::move(mesh)), addMaterial(scene, matte("grey", 0x808080)), placed(centre));
+  addObject(scene, "object", addMesh(scene, std::move(mesh)), addMaterial(scene, matte("grey", 0x808080)),
+            placed(centre));
   return std::make_shared<const scene::Scene>(std::move(scene));
 }
 
 // Consecutive triples as triangles (the last corners repeat to fill the final one).
 std::vector<std::uint32_t> triples(std::size_t count) {
   std::vector<std::uint32_t> indices;
-  for (std::size_t i = 0; i < (count + 2) / 3 * 3; ++i) indices.push_back(static_cast<std::uint32_t>(std::min(i, count - 1)));
+  for (std::size_t i = 0; i < (count + 2) / 3 * 3; ++i)
+    indices.push_back(static_cast<std::uint32_t>(std::min(i, count - 1)));
   return indices;
 }
 
@@ -102,7 +107,8 @@ Outcome renderAndMeasure(render::Renderer& renderer, const math::Camera& camera,
     out.tessellated = bench::measureTessellatedPoints(renderer, pose, *frame);
     for (const passes::FinishedVertex& vertex : renderer.readTessellatedVertices())
       for (int axis = 0; axis < 3; ++axis)
-        if (!std::isfinite(vertex.record.virtualFlags[axis]) || !std::isfinite(vertex.record.reflectionTexelX[axis])) ++out.nonFinite;
+        if (!std::isfinite(vertex.record.virtualFlags[axis]) || !std::isfinite(vertex.record.reflectionTexelX[axis]))
+          ++out.nonFinite;
   }
   return out;
 }
@@ -157,10 +163,12 @@ std::vector<HardCase> hardCases() {
                                                ring({1, 0, 0}, 0.3f, 2.5f, 24), ring({0, 0, 1}, -2.0f, 1.5f, 24)});
   return {
       // Eye, centre and vertex (nearly) on one line: behind the sphere (hidden) and in front of it.
-      {"collinear_behind", origin, concat({{{0, 0, -3}, {1e-6f, 0, -3}, {0, 1e-4f, -2}, {0, 0, -1.0001f}}, ring({0, 0, 1}, -3.0f, 1e-3f, 12)}),
+      {"collinear_behind", origin,
+       concat({{{0, 0, -3}, {1e-6f, 0, -3}, {0, 1e-4f, -2}, {0, 0, -1.0001f}}, ring({0, 0, 1}, -3.0f, 1e-3f, 12)}),
        standard, 0.05, 0.5, false},
-      {"collinear_in_front", origin, concat({{{0, 0, 2}, {1e-6f, 0, 3}, {0, 1e-4f, 1.5f}, {0, 0, 4.9f}}, ring({0, 0, 1}, 2.5f, 1e-3f, 12)}),
-       standard, 0.05, 0.5},
+      {"collinear_in_front", origin,
+       concat({{{0, 0, 2}, {1e-6f, 0, 3}, {0, 1e-4f, 1.5f}, {0, 0, 4.9f}}, ring({0, 0, 1}, 2.5f, 1e-3f, 12)}), standard,
+       0.05, 0.5},
       // Vertices and eye both near the horizon: reflection points at grazing angles on the silhouette.
       {"grazing", origin, concat({ring({0, 0, 1}, -0.05f, 1.05f, 48), ring({0, 0, 1}, 0.02f, 1.2f, 48)}),
        lookAt({0.0f, 0.0f, 3.0f}, origin, 50.0f), 0.1, 2.0},
@@ -179,13 +187,22 @@ std::vector<HardCase> hardCases() {
       {"translated_1e4", {10000.0f, 0.0f, -10000.0f}, shell, standard, 0.5, 1.5},
       {"mirror_half_off_screen", origin, shell, lookAt(eyeZ, {1.8f, 0.0f, 0.0f}, 40.0f), 0.05, 1.0},
       {"mirror_a_few_pixels", origin, shell, lookAt({0.0f, 0.0f, 400.0f}, origin, 40.0f), 0.05,
-       -1.0},  // the mesh spans 4 texels: too coarse a G-buffer to tell hidden from visible on it (the image is checked per pixel)
+       -1.0},  // the mesh spans 4 texels: too coarse a G-buffer to tell hidden from visible on it (the image is checked
+               // per pixel)
       {"mirror_fills_the_screen", origin, shell, lookAt({0.0f, 0.0f, 1.5f}, origin, 40.0f), 0.05, 1.0},
       // Triangles whose corners fall on different sides: reflected in front, hidden behind the
       // sphere, and at the horizon between; tessellation splits the edges that cross over.
-      {"triangles_across_the_horizon", origin,
-       {{1.6f, 0.2f, 0.8f}, {0.0f, 0.3f, -1.8f}, {-1.6f, -0.2f, 0.8f}, {1.2f, 0.0f, 0.0f}, {0.0f, 1.5f, -0.1f}, {-0.5f, 0.0f, -2.5f}},
-       standard, 0.05, 1.0},
+      {"triangles_across_the_horizon",
+       origin,
+       {{1.6f, 0.2f, 0.8f},
+        {0.0f, 0.3f, -1.8f},
+        {-1.6f, -0.2f, 0.8f},
+        {1.2f, 0.0f, 0.0f},
+        {0.0f, 1.5f, -0.1f},
+        {-0.5f, 0.0f, -2.5f}},
+       standard,
+       0.05,
+       1.0},
   };
 }
 
@@ -219,33 +236,40 @@ TEST_P(HardCases, StayFiniteAndNearTheExactReflection) {
     if (hard.expectMeasured) {
       EXPECT_FALSE(outcome.errors.pixels.empty()) << "no visible reflection to compare";
     }
-    std::printf("%s%s, %s search, %s: p99 %.3g px, max %.3g px over %zu vertices; tessellated: max %.3g px over %zu\n", hard.name,
-                surface == Surface::Mesh ? " on the mesh" : surface == Surface::Extrusion ? " on the cylinder" : "", passes::searchStrategyName(search), mode == passes::TessellationMode::None ? "untessellated" : "tessellated",
+    std::printf("%s%s, %s search, %s: p99 %.3g px, max %.3g px over %zu vertices; tessellated: max %.3g px over %zu\n",
+                hard.name,
+                surface == Surface::Mesh        ? " on the mesh"
+                : surface == Surface::Extrusion ? " on the cylinder"
+                                                : "",
+                passes::searchStrategyName(search),
+                mode == passes::TessellationMode::None ? "untessellated" : "tessellated",
                 outcome.errors.percentile(0.99), outcome.errors.percentile(1.0), outcome.errors.pixels.size(),
                 outcome.tessellated.percentile(1.0), outcome.tessellated.pixels.size());
     for (const auto* errors : {&outcome.errors, &outcome.tessellated}) {
       if (errors->pixels.empty()) continue;
       const char* which = errors == &outcome.errors ? "mesh vertices" : "tessellated vertices";
-      EXPECT_LE(errors->percentile(1.0), bound)
-          << which << ": p50 " << errors->percentile(0.5) << ", p99 " << errors->percentile(0.99) << " over " << errors->pixels.size();
+      EXPECT_LE(errors->percentile(1.0), bound) << which << ": p50 " << errors->percentile(0.5) << ", p99 "
+                                                << errors->percentile(0.99) << " over " << errors->pixels.size();
       // On a mesh the silhouette is its polygon's, not the sphere's: vertices reflected within a few
       // degrees of grazing may be hidden there (and the cylinder's float solver rounds the other way
       // than the double one there); every other judgement must agree.
       int misjudged = errors->exactHiddenButSearchVisible + errors->searchHiddenButExactVisible;
       if (surface != Surface::Exact) misjudged -= errors->searchHiddenNearSilhouette;
-      EXPECT_LE(misjudged, 1)
-          << which << ": " << errors->exactHiddenButSearchVisible << " reflected without a reflection point, "
-          << errors->searchHiddenButExactVisible << " hidden although reflected, of " << errors->pixels.size() << " measured";
+      EXPECT_LE(misjudged, 1) << which << ": " << errors->exactHiddenButSearchVisible
+                              << " reflected without a reflection point, " << errors->searchHiddenButExactVisible
+                              << " hidden although reflected, of " << errors->pixels.size() << " measured";
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Sphere, HardCases,
-                         ::testing::Combine(::testing::ValuesIn(hardCases()), ::testing::Values(Surface::Exact, Surface::Mesh),
+                         ::testing::Combine(::testing::ValuesIn(hardCases()),
+                                            ::testing::Values(Surface::Exact, Surface::Mesh),
                                             ::testing::ValuesIn(kSearchStrategies)),
                          [](const auto& test) {
-                           return std::string(std::get<0>(test.param).name) + (std::get<1>(test.param) == Surface::Exact ? "" : "_on_the_mesh") +
-                                  "_" + searchName(std::get<2>(test.param));
+                           return std::string(std::get<0>(test.param).name) +
+                                  (std::get<1>(test.param) == Surface::Exact ? "" : "_on_the_mesh") + "_" +
+                                  searchName(std::get<2>(test.param));
                          });
 
 // The same configurations about a cylinder solved in 2-D: no search runs, so one strategy stands for all.
@@ -270,7 +294,8 @@ TEST(HardCasesGeometry, DegenerateSliverAndDuplicatedTrianglesStayFinite) {
   for (float threshold : {1.0f, 0.0f}) {  // threshold 0 at the level limit: every edge splits
     passes::ReflectionSettings settings;
     settings.tessellation.threshold = threshold;
-    const Outcome outcome = renderAndMeasure(**renderer, lookAt({0.5f, 0.8f, 4.0f}, glm::vec3(0.0f), 45.0f), 320, 240, settings);
+    const Outcome outcome =
+        renderAndMeasure(**renderer, lookAt({0.5f, 0.8f, 4.0f}, glm::vec3(0.0f), 45.0f), 320, 240, settings);
     EXPECT_EQ(outcome.nonFinite, 0u);
     ASSERT_FALSE(outcome.errors.pixels.empty());
     EXPECT_LE(outcome.errors.percentile(1.0), 0.05);
@@ -282,10 +307,12 @@ TEST(HardCasesGeometry, ACameraTeleportStartsFromStaleSeedsAndStillConverges) {
   ASSERT_TRUE(gl);
   std::vector<glm::vec3> vertices = concat({ring({0, 1, 0}, 0.0f, 2.0f, 48), ring({1, 0, 0}, 0.5f, 2.5f, 48)});
   for (const Surface surface : {Surface::Exact, Surface::Mesh}) {
-    auto renderer = render::Renderer::create(*gl, sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()), surface));
+    auto renderer =
+        render::Renderer::create(*gl, sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()), surface));
     ASSERT_TRUE(renderer) << renderer.error();
     // Warm seeds from one side, then the opposite side and a far jump: seeds point at the wrong texels.
-    for (const glm::vec3& eye : {glm::vec3(0, 0, 5), glm::vec3(0, 0.5f, -5), glm::vec3(4, 3, 0.2f), glm::vec3(0, 0, 5)}) {
+    for (const glm::vec3& eye :
+         {glm::vec3(0, 0, 5), glm::vec3(0, 0.5f, -5), glm::vec3(4, 3, 0.2f), glm::vec3(0, 0, 5)}) {
       const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, glm::vec3(0.0f), 45.0f), 320, 240);
       EXPECT_EQ(outcome.nonFinite, 0u);
       ASSERT_FALSE(outcome.errors.pixels.empty());
@@ -303,15 +330,16 @@ TEST(HardCasesGeometry, ACameraTeleportStartsFromStaleSeedsAndStillConverges) {
 TEST(HardCasesGeometry, AnRgba16fGBufferStaysNearRgba32fWithTheErrorQuantified) {
   auto gl = context();
   ASSERT_TRUE(gl);
-  const std::vector<glm::vec3> shell = concat({ring({0, 1, 0}, 0.0f, 2.0f, 48), ring({1, 0, 0}, 0.3f, 2.5f, 48),
-                                               ring({0, 0, 1}, -2.0f, 1.5f, 24)});
+  const std::vector<glm::vec3> shell =
+      concat({ring({0, 1, 0}, 0.0f, 2.0f, 48), ring({1, 0, 0}, 0.3f, 2.5f, 48), ring({0, 0, 1}, -2.0f, 1.5f, 24)});
   struct Placement {
     glm::vec3 centre;
     bool halfFloatsKept;
     double maxHalfErrorPixels;
   };
-  for (const Placement& placed : {Placement{glm::vec3(0.0f), true, 0.01}, Placement{{4.0f, -2.0f, 4.0f}, true, 0.01},
-                                  Placement{{1000.0f, -300.0f, 1000.0f}, false, 0.1}, Placement{{1e4f, 0.0f, -1e4f}, false, 0.1}}) {
+  for (const Placement& placed :
+       {Placement{glm::vec3(0.0f), true, 0.01}, Placement{{4.0f, -2.0f, 4.0f}, true, 0.01},
+        Placement{{1000.0f, -300.0f, 1000.0f}, false, 0.1}, Placement{{1e4f, 0.0f, -1e4f}, false, 0.1}}) {
     auto renderer = render::Renderer::create(*gl, sphereAndObject(placed.centre, shell, triples(shell.size())));
     ASSERT_TRUE(renderer) << renderer.error();
     double worst[2] = {0.0, 0.0};
@@ -325,12 +353,14 @@ TEST(HardCasesGeometry, AnRgba16fGBufferStaysNearRgba32fWithTheErrorQuantified) 
       ASSERT_GT(outcome.errors.pixels.size(), shell.size() / 2);
       const bool half = precision == passes::GBufferPrecision::Float16;
       if (half) {
-        EXPECT_EQ(outcome.precision == passes::GBufferPrecision::Float16, placed.halfFloatsKept) << glm::length(placed.centre);
+        EXPECT_EQ(outcome.precision == passes::GBufferPrecision::Float16, placed.halfFloatsKept)
+            << glm::length(placed.centre);
       }
       worst[half] = outcome.errors.percentile(1.0);
-      std::printf("G-buffer %s (used %s) at |centre| %.0f: reflection-point error p50 %.2g px, p99 %.2g px, max %.2g px\n",
-                  half ? "RGBA16F" : "RGBA32F", outcome.precision == passes::GBufferPrecision::Float16 ? "RGBA16F" : "RGBA32F",
-                  glm::length(placed.centre), outcome.errors.percentile(0.5), outcome.errors.percentile(0.99), worst[half]);
+      std::printf(
+          "G-buffer %s (used %s) at |centre| %.0f: reflection-point error p50 %.2g px, p99 %.2g px, max %.2g px\n",
+          half ? "RGBA16F" : "RGBA32F", outcome.precision == passes::GBufferPrecision::Float16 ? "RGBA16F" : "RGBA32F",
+          glm::length(placed.centre), outcome.errors.percentile(0.5), outcome.errors.percentile(0.99), worst[half]);
     }
     EXPECT_LE(worst[0], 0.1) << "RGBA32F at |centre| " << glm::length(placed.centre);
     EXPECT_LE(worst[1], placed.maxHalfErrorPixels) << "RGBA16F at |centre| " << glm::length(placed.centre);
@@ -354,10 +384,12 @@ std::shared_ptr<const scene::Scene> mirrorsAndManyVertices(int mirrors, std::siz
   mesh.name = "many-vertices";
   for (std::size_t i = 0; i < vertexCount; ++i) {
     const float angle = 6.2831853f * static_cast<float>(i) / static_cast<float>(vertexCount);
-    mesh.vertices.push_back({{2.0f * std::cos(angle), 0.5f, 2.0f * std::sin(angle)}, {0.0f, 1.0f, 0.0f}, glm::vec2(0.0f)});
+    mesh.vertices.push_back(
+        {{2.0f * std::cos(angle), 0.5f, 2.0f * std::sin(angle)}, {0.0f, 1.0f, 0.0f}, glm::vec2(0.0f)});
   }
   mesh.indices = {0, 1, 2};
-  addObject(scene, "ring", addMesh(scene, std::move(mesh)), addMaterial(scene, matte("grey", 0x808080)), placed(glm::vec3(0.0f)));
+  addObject(scene, "ring", addMesh(scene, std::move(mesh)), addMaterial(scene, matte("grey", 0x808080)),
+            placed(glm::vec3(0.0f)));
   return std::make_shared<const scene::Scene>(std::move(scene));
 }
 
@@ -379,13 +411,15 @@ TEST(HardCasesGeometry, VertexCountsNearTheGpuBufferLimitsRenderOrFailByName) {
   auto refused = render::Renderer::create(*gl, mirrorsAndManyVertices(tooManyMirrors, kVertices));
   ASSERT_FALSE(refused) << tooManyMirrors << " mirrors x " << kVertices << " vertices exceed the limit";
   EXPECT_NE(refused.error().find("reflection slots"), std::string::npos) << refused.error();
-  EXPECT_NE(refused.error().find("\"reflected\": false"), std::string::npos) << "the error names the fix: " << refused.error();
+  EXPECT_NE(refused.error().find("\"reflected\": false"), std::string::npos)
+      << "the error names the fix: " << refused.error();
 
   auto renderer = render::Renderer::create(*gl, mirrorsAndManyVertices(1, kVertices));
   ASSERT_TRUE(renderer) << renderer.error();
   passes::ReflectionSettings settings;
   settings.tessellation.mode = passes::TessellationMode::None;
-  const Outcome outcome = renderAndMeasure(**renderer, lookAt({0.0f, 3.0f, 5.0f}, glm::vec3(0.0f), 45.0f), 160, 120, settings);
+  const Outcome outcome =
+      renderAndMeasure(**renderer, lookAt({0.0f, 3.0f, 5.0f}, glm::vec3(0.0f), 45.0f), 160, 120, settings);
   EXPECT_EQ(outcome.slots, kVertices);
   EXPECT_EQ(outcome.nonFinite, 0u);
   ASSERT_GT(outcome.errors.pixels.size(), kVertices / 4) << "most of the ring is visible in the mirror";
@@ -398,7 +432,9 @@ TEST(HardCasesGeometry, VertexCountsNearTheGpuBufferLimitsRenderOrFailByName) {
 struct RandomizedResult {
   std::size_t configurations = 0, nonFinite = 0, measured = 0, misjudged = 0, misjudgedNearSilhouette = 0;
   std::vector<double> errors;  // sorted, pixels
-  double quantile(double p) const { return errors[static_cast<std::size_t>(p * static_cast<double>(errors.size() - 1))]; }
+  double quantile(double p) const {
+    return errors[static_cast<std::size_t>(p * static_cast<double>(errors.size() - 1))];
+  }
 };
 
 RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexCount, unsigned seed,
@@ -417,7 +453,8 @@ RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexC
   auto logUniform = [&](float low, float high) { return low * std::pow(high / low, unit(random)); };
   std::vector<glm::vec3> vertices;
   for (int i = 0; i < vertexCount; ++i) vertices.push_back(direction() * logUniform(1.0001f, 20.0f));
-  auto renderer = render::Renderer::create(*gl, sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()), surface));
+  auto renderer =
+      render::Renderer::create(*gl, sphereAndObject(glm::vec3(0.0f), vertices, triples(vertices.size()), surface));
   EXPECT_TRUE(renderer) << renderer.error();
   if (!renderer) return result;
   passes::ReflectionSettings settings;
@@ -429,21 +466,24 @@ RandomizedResult randomizedConfigurations(Surface surface, int eyes, int vertexC
     const float fov = 2.0f * glm::degrees(std::asin(1.0f / distance)) / (0.2f + 0.7f * unit(random));
     const glm::vec3 eye = direction() * distance;
     const glm::vec3 target = 0.3f * (direction() * unit(random));
-    const Outcome outcome = renderAndMeasure(**renderer, lookAt(eye, target, std::min(fov, 120.0f)), 160, 120, settings);
+    const Outcome outcome =
+        renderAndMeasure(**renderer, lookAt(eye, target, std::min(fov, 120.0f)), 160, 120, settings);
     result.configurations += outcome.slots;
     result.nonFinite += outcome.nonFinite;
     result.measured += outcome.errors.pixels.size();
-    result.misjudged +=
-        static_cast<std::size_t>(outcome.errors.exactHiddenButSearchVisible + outcome.errors.searchHiddenButExactVisible);
+    result.misjudged += static_cast<std::size_t>(outcome.errors.exactHiddenButSearchVisible +
+                                                 outcome.errors.searchHiddenButExactVisible);
     result.misjudgedNearSilhouette += static_cast<std::size_t>(outcome.errors.searchHiddenNearSilhouette);
     result.errors.insert(result.errors.end(), outcome.errors.pixels.begin(), outcome.errors.pixels.end());
   }
   std::sort(result.errors.begin(), result.errors.end());
-  std::printf("randomized %s, %s search: %zu configurations, %zu measured, error p50 %.2g px, p90 %.2g px, p99 %.2g px, max %.2g px, "
-              "%zu misjudged (%zu within 6 degrees of grazing)\n",
-              surface == Surface::Exact ? "exact sphere" : "96x48 mesh sphere", passes::searchStrategyName(search), result.configurations, result.measured,
-              result.quantile(0.5), result.quantile(0.9), result.quantile(0.99), result.errors.back(), result.misjudged,
-              result.misjudgedNearSilhouette);
+  std::printf(
+      "randomized %s, %s search: %zu configurations, %zu measured, error p50 %.2g px, p90 %.2g px, p99 %.2g px, max "
+      "%.2g px, "
+      "%zu misjudged (%zu within 6 degrees of grazing)\n",
+      surface == Surface::Exact ? "exact sphere" : "96x48 mesh sphere", passes::searchStrategyName(search),
+      result.configurations, result.measured, result.quantile(0.5), result.quantile(0.9), result.quantile(0.99),
+      result.errors.back(), result.misjudged, result.misjudgedNearSilhouette);
   return result;
 }
 
@@ -473,13 +513,15 @@ TEST(HardCasesRandomized, TenThousandConfigurationsOnAMeshSphereStayNearTheExact
 // The ray-hierarchy search on fresh random configurations (other seeds), exact sphere and mesh, held
 // to the crosshair search's bounds: 50 eyes × 500 vertices and 50 × 250.
 TEST(HardCasesRandomized, TheHierarchySearchMeetsTheSameBoundsOnRandomConfigurations) {
-  const RandomizedResult exact = randomizedConfigurations(Surface::Exact, 50, 500, 20261204, passes::SearchStrategy::Hierarchy);
+  const RandomizedResult exact =
+      randomizedConfigurations(Surface::Exact, 50, 500, 20261204, passes::SearchStrategy::Hierarchy);
   EXPECT_EQ(exact.nonFinite, 0u) << "NaN or Inf in a reflection result";
   ASSERT_GT(exact.measured, exact.configurations / 20) << "too few visible reflections to judge";
   EXPECT_LE(exact.quantile(0.99), 0.01) << "p50 " << exact.quantile(0.5);
   EXPECT_LE(exact.errors.back(), 0.5);
   EXPECT_LE(exact.misjudged, exact.measured / 10000 + 1) << "hidden/visible disagreements";
-  const RandomizedResult mesh = randomizedConfigurations(Surface::Mesh, 50, 250, 20261205, passes::SearchStrategy::Hierarchy);
+  const RandomizedResult mesh =
+      randomizedConfigurations(Surface::Mesh, 50, 250, 20261205, passes::SearchStrategy::Hierarchy);
   EXPECT_EQ(mesh.nonFinite, 0u) << "NaN or Inf in a reflection result";
   ASSERT_GT(mesh.measured, mesh.configurations / 20) << "too few visible reflections to judge";
   EXPECT_LE(mesh.quantile(0.99), 1.0) << "p50 " << mesh.quantile(0.5);
@@ -497,7 +539,8 @@ namespace {
 TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
   auto gl = context();
   ASSERT_TRUE(gl);
-  auto renderer = render::Renderer::create(*gl, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("kitchen")));
+  auto renderer =
+      render::Renderer::create(*gl, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("kitchen")));
   ASSERT_TRUE(renderer) << renderer.error();
   for (double t : {0.0, 5.0, 10.0}) {  // the camera path runs from far to right above the bowl
     const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
@@ -513,7 +556,8 @@ TEST(HardCasesGeometry, AConcaveBowlWithObjectsInItsCausticRegionStaysFinite) {
   ASSERT_TRUE(frame) << frame.error();
   EXPECT_FALSE(frame->drawnMirrors.empty()) << "the bowl is in view edge-on";
   EXPECT_EQ(nonFiniteResults(**renderer), 0u) << "edge-on";
-  for (std::size_t i = 3; i < frame->rgba.size(); i += 4) ASSERT_EQ(frame->rgba[i], 255u) << "an undefined pixel edge-on";
+  for (std::size_t i = 3; i < frame->rgba.size(); i += 4)
+    ASSERT_EQ(frame->rgba[i], 255u) << "an undefined pixel edge-on";
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ namespace {
 constexpr int kWidth = 640, kHeight = 480;
 
 struct Comparison {
-  double mismatch = 1.0;        // share of the reference's mirror pixels that differ strongly
+  double mismatch = 1.0;  // share of the reference's mirror pixels that differ strongly
   std::size_t mirrorPixels = 0;
   render::RenderedFrame frame;
 };
@@ -36,10 +36,12 @@ struct Comparison {
 void saveForLooking(const std::vector<std::uint8_t>& rgba, const std::string& suffix) {
   const char* folder = std::getenv("SPECULA_TEST_IMAGES");
   if (!folder) return;
-  const std::string name = std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" + suffix + ".png";
+  const std::string name =
+      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" + suffix + ".png";
   auto png = encode::encodePng({rgba.data(), kWidth, kHeight});
-  if (png) std::ofstream(std::filesystem::path(folder) / name, std::ios::binary).write(reinterpret_cast<const char*>(png->data()),
-                                                                                       static_cast<std::streamsize>(png->size()));
+  if (png)
+    std::ofstream(std::filesystem::path(folder) / name, std::ios::binary)
+        .write(reinterpret_cast<const char*>(png->data()), static_cast<std::streamsize>(png->size()));
 }
 
 // Renders `scene` at `pose` and compares it with the ray tracer's image of `truth` (the same scene
@@ -54,7 +56,8 @@ Comparison compare(const std::shared_ptr<const scene::Scene>& scene, const scene
   auto frame = rig.renderer->render(pose, kWidth, kHeight, settings);
   EXPECT_TRUE(frame) << frame.error();
   if (!frame) return result;
-  specula::testing::MirrorMismatch mismatch = specula::testing::mismatchAgainstRayTracer(truth ? truth : scene, pose, *frame);
+  specula::testing::MirrorMismatch mismatch =
+      specula::testing::mismatchAgainstRayTracer(truth ? truth : scene, pose, *frame);
   saveForLooking(frame->rgba, "search");
   if (!mismatch.reference.empty()) saveForLooking(mismatch.reference, "raytrace");
   result.mismatch = mismatch.share;
@@ -73,13 +76,15 @@ std::shared_ptr<const scene::Scene> parse(const std::string& json, const std::fi
 // entry's JSON and `mirror` the object's extra keys.
 std::string mirrorOverFloor(const std::string& mirrorMesh, const std::string& mirror, const std::string& camera) {
   return R"({"specula_scene": 1, "ambient": [0.1, 0.1, 0.1], "background": "#203040", "camera": )" + camera + R"(,
-    "meshes": [)" + mirrorMesh + R"(,
+    "meshes": [)" +
+         mirrorMesh + R"(,
       {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
       {"name": "box", "primitive": {"type": "box", "size": [0.6, 0.6, 0.6]}}],
     "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9},
       {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
       {"name": "red", "color": "#d02020"}, {"name": "green", "color": "#20b040"}, {"name": "blue", "color": "#3050e0"}],
-    "objects": [{"name": "mirror", "mesh": "mirror", "material": "chrome", )" + mirror + R"(},
+    "objects": [{"name": "mirror", "mesh": "mirror", "material": "chrome", )" +
+         mirror + R"(},
       {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]},
       {"name": "red", "mesh": "box", "material": "red", "translation": [2.2, -0.7, 0.5]},
       {"name": "green", "mesh": "box", "material": "green", "translation": [-1.8, -0.7, 1.6]},
@@ -104,11 +109,12 @@ TEST_P(MeshMirrorSearch, TessellatedSphereMatchesTheRayTracerAndTheExactSphere) 
     const scene::ScenePose pose = scene::ScenePose::at(*mesh, t);
     const Comparison own = compare(mesh, pose, nullptr, specula::testing::withSearch(GetParam()));
     const Comparison sphere = compare(mesh, pose, exact, specula::testing::withSearch(GetParam()));
-    std::printf("mesh sphere t=%.0f, %s search: %.2f %% against its own ray trace, %.2f %% against the exact sphere's\n", t,
-                passes::searchStrategyName(GetParam()), 100.0 * own.mismatch, 100.0 * sphere.mismatch);
+    std::printf(
+        "mesh sphere t=%.0f, %s search: %.2f %% against its own ray trace, %.2f %% against the exact sphere's\n", t,
+        passes::searchStrategyName(GetParam()), 100.0 * own.mismatch, 100.0 * sphere.mismatch);
     EXPECT_GT(own.mirrorPixels, 20000u);
-    EXPECT_LE(own.mismatch, 0.015) << "t=" << t;      // 47-52 % before the fix
-    EXPECT_LE(sphere.mismatch, 0.015) << "t=" << t;   // the issue's bound against the exact sphere
+    EXPECT_LE(own.mismatch, 0.015) << "t=" << t;     // 47-52 % before the fix
+    EXPECT_LE(sphere.mismatch, 0.015) << "t=" << t;  // the issue's bound against the exact sphere
   }
 }
 
@@ -117,7 +123,8 @@ TEST_P(MeshMirrorSearch, TessellatedSphereMatchesTheRayTracerAndTheExactSphere) 
 TEST_P(MeshMirrorSearch, TessellatedSphereReflectionPointsStayWithinHalfAPixel) {
   auto context = gl::GlContext::create(gl::PlatformChoice::Auto);
   ASSERT_TRUE(context) << context.error();
-  auto renderer = render::Renderer::create(**context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("mesh-sphere")));
+  auto renderer = render::Renderer::create(
+      **context, std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("mesh-sphere")));
   ASSERT_TRUE(renderer) << renderer.error();
   for (double t : {0.0, 4.0, 11.0}) {
     const scene::ScenePose pose = scene::ScenePose::at((*renderer)->scene(), t);
@@ -125,15 +132,18 @@ TEST_P(MeshMirrorSearch, TessellatedSphereReflectionPointsStayWithinHalfAPixel) 
     ASSERT_TRUE(frame) << frame.error();
     const auto errors = bench::measureReflectionPoints(**renderer, pose, *frame);
     ASSERT_GT(errors.pixels.size(), 100u);
-    std::printf("mesh sphere t=%.0f, %s search: reflection points p50 %.3f px, p99 %.3f px, max %.3f px over %zu vertices\n", t,
-                passes::searchStrategyName(GetParam()), errors.percentile(0.5), errors.percentile(0.99), errors.percentile(1.0), errors.pixels.size());
+    std::printf(
+        "mesh sphere t=%.0f, %s search: reflection points p50 %.3f px, p99 %.3f px, max %.3f px over %zu vertices\n", t,
+        passes::searchStrategyName(GetParam()), errors.percentile(0.5), errors.percentile(0.99), errors.percentile(1.0),
+        errors.pixels.size());
     EXPECT_LE(errors.percentile(0.99), 0.5) << "t=" << t;
   }
 }
 
 TEST(MeshMirror, TessellatedEllipsoid) {
-  auto scene = parse(mirrorOverFloor(R"({"name": "mirror", "primitive": {"type": "sphere", "radius": 1, "slices": 96, "stacks": 48}})",
-                                     R"("scale": [1.4, 0.7, 0.9], "reflected": false, "mirror": {"curvature": "convex"})", kCameraAbove));
+  auto scene = parse(mirrorOverFloor(
+      R"({"name": "mirror", "primitive": {"type": "sphere", "radius": 1, "slices": 96, "stacks": 48}})",
+      R"("scale": [1.4, 0.7, 0.9], "reflected": false, "mirror": {"curvature": "convex"})", kCameraAbove));
   ASSERT_TRUE(scene);
   const Comparison result = compare(scene, restPose(*scene));
   std::printf("mesh ellipsoid: %.2f %% of %zu mirror pixels\n", 100.0 * result.mismatch, result.mirrorPixels);
@@ -144,10 +154,11 @@ TEST(MeshMirror, TessellatedEllipsoid) {
 // Mixed curvature found from the mesh: a convex outside and a saddle-shaped inside, each its own
 // part; the torus also sees itself (its inner ring reflects its far side).
 TEST(MeshMirror, TorusSplitIntoConvexAndSaddleParts) {
-  auto scene = parse(mirrorOverFloor(R"({"name": "mirror", "primitive": {"type": "torus", "major_radius": 1, "minor_radius": 0.35,
+  auto scene = parse(
+      mirrorOverFloor(R"({"name": "mirror", "primitive": {"type": "torus", "major_radius": 1, "minor_radius": 0.35,
                                          "major_segments": 96, "minor_segments": 48}})",
-                                     R"("rotation": {"axis": [1, 0, 0], "degrees": 60}, "mirror": {})",
-                                     R"({"eye": [0.5, 2.5, 3.2], "target": [0, -0.2, 0], "fov": 45})"));
+                      R"("rotation": {"axis": [1, 0, 0], "degrees": 60}, "mirror": {})",
+                      R"({"eye": [0.5, 2.5, 3.2], "target": [0, -0.2, 0], "fov": 45})"));
   ASSERT_TRUE(scene);
   const Comparison result = compare(scene, restPose(*scene));
   std::printf("mesh torus: %.2f %% of %zu mirror pixels\n", 100.0 * result.mismatch, result.mirrorPixels);
@@ -175,9 +186,10 @@ TEST(MeshMirror, ConcaveBowlSeenFromInsideShowsItselfWhereItsRaysMeetIt) {
 TEST_P(MeshMirrorSearch, KitchenBowl) {
   auto scene = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene("kitchen"));
   for (double t : {0.0, 1.0}) {
-    const Comparison result = compare(scene, scene::ScenePose::at(*scene, t), nullptr, specula::testing::withSearch(GetParam()));
-    std::printf("kitchen bowl t=%.0f, %s search: %.2f %% of %zu mirror pixels\n", t, passes::searchStrategyName(GetParam()),
-                100.0 * result.mismatch, result.mirrorPixels);
+    const Comparison result =
+        compare(scene, scene::ScenePose::at(*scene, t), nullptr, specula::testing::withSearch(GetParam()));
+    std::printf("kitchen bowl t=%.0f, %s search: %.2f %% of %zu mirror pixels\n", t,
+                passes::searchStrategyName(GetParam()), 100.0 * result.mismatch, result.mirrorPixels);
     EXPECT_GT(result.mirrorPixels, 1000u);
     EXPECT_LE(result.mismatch, 0.05) << "t=" << t;  // measured 3.1 % and 2.4 %; its rim is 2-4 pixels wide
   }
@@ -205,8 +217,8 @@ TEST(MeshMirror, PixelsTheVirtualObjectsLeaveUncoveredAreRayCast) {
     const Comparison withRays = compare(scene, pose, nullptr, filled);
     std::size_t rayCast = 0;
     for (const render::MirrorPlanSummary& part : withRays.frame.plan) rayCast += part.uncoveredRayCast;
-    std::printf("%s t=%.0f: %.2f %% of %zu mirror pixels with %zu uncovered pixels ray-cast, %.2f %% without\n", c.scene, c.time,
-                100.0 * withRays.mismatch, withRays.mirrorPixels, rayCast, 100.0 * alone.mismatch);
+    std::printf("%s t=%.0f: %.2f %% of %zu mirror pixels with %zu uncovered pixels ray-cast, %.2f %% without\n",
+                c.scene, c.time, 100.0 * withRays.mismatch, withRays.mirrorPixels, rayCast, 100.0 * alone.mismatch);
     EXPECT_LE(withRays.mismatch, c.bound) << c.scene << " t=" << c.time;
     EXPECT_LT(withRays.mismatch, 0.5 * alone.mismatch) << c.scene << " t=" << c.time;
     EXPECT_GT(rayCast, 0u);
@@ -225,14 +237,16 @@ TEST(MeshMirror, TheKitchenBowlSeeingItselfStaysRightAtOtherGBufferScalesAndPrec
     passes::GBufferPrecision precision;
     double bound;
   };
-  for (const Case& c : {Case{2.0f, passes::GBufferPrecision::Float32, 0.10}, Case{0.5f, passes::GBufferPrecision::Float32, 0.18},
-                        Case{1.0f, passes::GBufferPrecision::Float16, 0.06}}) {
+  for (const Case& c :
+       {Case{2.0f, passes::GBufferPrecision::Float32, 0.10}, Case{0.5f, passes::GBufferPrecision::Float32, 0.18},
+        Case{1.0f, passes::GBufferPrecision::Float16, 0.06}}) {
     passes::ReflectionSettings settings = specula::testing::virtualObjects();
     settings.gbufferScale = c.scale;
     settings.gbufferPrecision = c.precision;
     const Comparison result = compare(scene, pose, nullptr, settings);
     std::printf("kitchen bowl, G-buffer x%g %s: %.2f %% of %zu mirror pixels\n", c.scale,
-                c.precision == passes::GBufferPrecision::Float16 ? "RGBA16F" : "RGBA32F", 100.0 * result.mismatch, result.mirrorPixels);
+                c.precision == passes::GBufferPrecision::Float16 ? "RGBA16F" : "RGBA32F", 100.0 * result.mismatch,
+                result.mirrorPixels);
     EXPECT_LE(result.mismatch, c.bound) << "x" << c.scale;
   }
 }
@@ -245,8 +259,10 @@ TEST(MeshMirror, OpenDomeSearchedOnItsClosedTwin) {
     const double angle = M_PI / 2 * k / 24;
     profile += (k ? ", [" : "[") + std::to_string(std::cos(angle)) + ", " + std::to_string(std::sin(angle)) + "]";
   }
-  const std::string json = R"({"specula_scene": 1, "ambient": [0.1, 0.1, 0.1], "camera": {"eye": [1.5, 2.6, 3.2], "target": [0, -0.4, 0], "fov": 45},
-    "meshes": [{"name": "dome", "primitive": {"type": "lathe", "slices": 96, "profile": [)" + profile + R"(]}},
+  const std::string json =
+      R"({"specula_scene": 1, "ambient": [0.1, 0.1, 0.1], "camera": {"eye": [1.5, 2.6, 3.2], "target": [0, -0.4, 0], "fov": 45},
+    "meshes": [{"name": "dome", "primitive": {"type": "lathe", "slices": 96, "profile": [)" +
+      profile + R"(]}},
       {"name": "ball", "primitive": {"type": "sphere", "radius": 1, "slices": 96, "stacks": 48}},
       {"name": "floor", "primitive": {"type": "grid", "size": [16, 16], "cells": [16, 16]}},
       {"name": "box", "primitive": {"type": "box", "size": [0.6, 0.6, 0.6]}}],
@@ -260,7 +276,8 @@ TEST(MeshMirror, OpenDomeSearchedOnItsClosedTwin) {
   auto scene = parse(json);
   ASSERT_TRUE(scene);
   const Comparison result = compare(scene, restPose(*scene));
-  std::printf("open dome on its closed twin: %.2f %% of %zu mirror pixels\n", 100.0 * result.mismatch, result.mirrorPixels);
+  std::printf("open dome on its closed twin: %.2f %% of %zu mirror pixels\n", 100.0 * result.mismatch,
+              result.mirrorPixels);
   EXPECT_GT(result.mirrorPixels, 20000u);
   EXPECT_LE(result.mismatch, 0.015);
 }
@@ -281,8 +298,8 @@ TEST(MeshMirror, ImportedObjWithItsOwnNormals) {
       // Normal of the map p = s(y) D x with D = diag(1.2, 0.8, 1), s = 1 + 0.1 y, by its inverse transpose.
       const glm::vec3 x = v.position;
       const float s = 1.0f + 0.1f * x.y;
-      const glm::mat3 jacobian = glm::mat3(glm::vec3(1.2f * s, 0, 0), glm::vec3(0.12f * x.x, 0.8f * s + 0.08f * x.y, 0.1f * x.z),
-                                           glm::vec3(0, 0, s));
+      const glm::mat3 jacobian = glm::mat3(
+          glm::vec3(1.2f * s, 0, 0), glm::vec3(0.12f * x.x, 0.8f * s + 0.08f * x.y, 0.1f * x.z), glm::vec3(0, 0, s));
       const glm::vec3 n = glm::normalize(glm::transpose(glm::inverse(jacobian)) * v.normal);
       obj << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
     }
@@ -292,8 +309,9 @@ TEST(MeshMirror, ImportedObjWithItsOwnNormals) {
       obj << '\n';
     }
   }
-  auto scene = parse(mirrorOverFloor(R"({"name": "mirror", "file": "blob.obj"})", R"("reflected": false, "mirror": {})", kCameraAbove),
-                     folder);
+  auto scene = parse(
+      mirrorOverFloor(R"({"name": "mirror", "file": "blob.obj"})", R"("reflected": false, "mirror": {})", kCameraAbove),
+      folder);
   ASSERT_TRUE(scene);
   const Comparison result = compare(scene, restPose(*scene));
   std::printf("imported OBJ mirror: %.2f %% of %zu mirror pixels\n", 100.0 * result.mismatch, result.mirrorPixels);
@@ -316,7 +334,8 @@ std::string saddlePatch() {
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
       const double x = -1.2 + 0.8 * i, z = -1.2 + 0.8 * j;
-      points += (points.empty() ? "[" : ", [") + std::to_string(x) + ", " + std::to_string(0.35 * x * z) + ", " + std::to_string(z) + "]";
+      points += (points.empty() ? "[" : ", [") + std::to_string(x) + ", " + std::to_string(0.35 * x * z) + ", " +
+                std::to_string(z) + "]";
     }
   return R"({"name": "mirror", "segments": 24, "bezier_patches": [[)" + points + "]]}";
 }
@@ -376,12 +395,14 @@ TEST_P(MeshMirrorHardViews, SearchedMirrorsStayNearTheRayTracer) {
   auto scene = parse(mirrorOverFloor(kind.mesh, kind.placement, view.camera));
   ASSERT_TRUE(scene);
   const Comparison result = compare(scene, restPose(*scene));
-  std::printf("%s %s: %.3f %% of %zu mirror pixels\n", kind.name, view.name, 100.0 * result.mismatch, result.mirrorPixels);
+  std::printf("%s %s: %.3f %% of %zu mirror pixels\n", kind.name, view.name, 100.0 * result.mismatch,
+              result.mirrorPixels);
   EXPECT_GT(result.mirrorPixels, 200u);
   EXPECT_GT(result.frame.search.searched, 0u) << "searched, not cast";
   EXPECT_LE(result.mismatch, hard.bound);
 }
 
 INSTANTIATE_TEST_SUITE_P(MeshMirror, MeshMirrorHardViews, ::testing::ValuesIn(kHardViewCases), [](const auto& test) {
-  return std::string(mirrorKinds()[static_cast<std::size_t>(test.param.kind)].name) + "_" + kHardViews[test.param.view].name;
+  return std::string(mirrorKinds()[static_cast<std::size_t>(test.param.kind)].name) + "_" +
+         kHardViews[test.param.view].name;
 });

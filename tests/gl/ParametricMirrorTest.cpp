@@ -42,11 +42,13 @@ Measured measure(const passes::ReflectionSettings& settings) {
     const auto mismatch = specula::testing::mismatchAgainstRayTracer(scene, pose, *frame);
     measured.worstMismatch = std::max(measured.worstMismatch, mismatch.share);
   }
-  std::printf("%zu points: p50 %.4f px, p90 %.4f px, p95 %.4f px, p99 %.4f px, max %.4f px; %d hidden although reflected, "
-              "%d reflected where none is; worst mirror mismatch %.3f %%\n",
-              measured.points.pixels.size(), measured.points.percentile(0.5), measured.points.percentile(0.9),
-              measured.points.percentile(0.95), measured.points.percentile(0.99), measured.points.percentile(1.0),
-              measured.points.searchHiddenButExactVisible, measured.points.exactHiddenButSearchVisible, 100.0 * measured.worstMismatch);
+  std::printf(
+      "%zu points: p50 %.4f px, p90 %.4f px, p95 %.4f px, p99 %.4f px, max %.4f px; %d hidden although reflected, "
+      "%d reflected where none is; worst mirror mismatch %.3f %%\n",
+      measured.points.pixels.size(), measured.points.percentile(0.5), measured.points.percentile(0.9),
+      measured.points.percentile(0.95), measured.points.percentile(0.99), measured.points.percentile(1.0),
+      measured.points.searchHiddenButExactVisible, measured.points.exactHiddenButSearchVisible,
+      100.0 * measured.worstMismatch);
   return measured;
 }
 
@@ -58,12 +60,14 @@ std::vector<math::BezierPatch> twoPatchCap(double crease) {
   // Bézier coefficients of −t²/2 on [−½, ½] as a cubic, and the positions of the control rows.
   const double height[4] = {-0.125, 0.125 / 3.0, 0.125 / 3.0, -0.125};
   math::BezierPatch whole;
-  for (int row = 0; row < 4; ++row)      // v: along x
+  for (int row = 0; row < 4; ++row)             // v: along x
     for (int column = 0; column < 4; ++column)  // u: along z, so du × dv points up
-      whole.points[static_cast<std::size_t>(4 * row + column)] = {-0.5 + row / 3.0, height[row] + height[column], -0.5 + column / 3.0};
+      whole.points[static_cast<std::size_t>(4 * row + column)] = {-0.5 + row / 3.0, height[row] + height[column],
+                                                                  -0.5 + column / 3.0};
   math::BezierPatch left = whole.restricted(0.0, 1.0, 0.0, 0.5), right = whole.restricted(0.0, 1.0, 0.5, 1.0);
   const double rowSpacing = 0.5 / 3.0;  // of the right patch's control rows, along x
-  for (int column = 0; column < 4; ++column) right.points[static_cast<std::size_t>(4 + column)].y -= crease * rowSpacing;
+  for (int column = 0; column < 4; ++column)
+    right.points[static_cast<std::size_t>(4 + column)].y -= crease * rowSpacing;
   return {left, right};
 }
 
@@ -76,13 +80,15 @@ std::shared_ptr<const scene::Scene> capScene(double crease) {
   cap.background = {0.2f, 0.2f, 0.3f};
   cap.lights.push_back(scene::builtin::sunLight({0.3f, 1.0f, 0.2f}, 1.0f));
   cap.camera = {{-3.0f, 4.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 25.0f};
-  const std::uint32_t mirror =
-      scene::builtin::addObject(cap, "cap", scene::builtin::addMesh(cap, scene::parametricMesh("cap", twoPatchCap(crease))),
-                                scene::builtin::addMaterial(cap, scene::builtin::perfectMirror("chrome")));
-  cap.objects[mirror].mirror = scene::MirrorInfo{scene::MirrorCurvature::Convex, true, std::nullopt, std::nullopt, std::nullopt};
+  const std::uint32_t mirror = scene::builtin::addObject(
+      cap, "cap", scene::builtin::addMesh(cap, scene::parametricMesh("cap", twoPatchCap(crease))),
+      scene::builtin::addMaterial(cap, scene::builtin::perfectMirror("chrome")));
+  cap.objects[mirror].mirror =
+      scene::MirrorInfo{scene::MirrorCurvature::Convex, true, std::nullopt, std::nullopt, std::nullopt};
   cap.objects[mirror].reflected = false;
   // The seam's own reflection at the cap's top leaves along (0.6, 0.8, 0) and meets y = 4 at x = 3.
-  scene::builtin::addObject(cap, "strip", scene::builtin::addMesh(cap, scene::primitives::grid("strip", 0.4f, 0.02f, 2000, 2)),
+  scene::builtin::addObject(cap, "strip",
+                            scene::builtin::addMesh(cap, scene::primitives::grid("strip", 0.4f, 0.02f, 2000, 2)),
                             scene::builtin::addMaterial(cap, scene::builtin::matte("orange", 0xE08020)),
                             scene::builtin::placed({3.0f, 4.0f, 0.0f}));
   return std::make_shared<const scene::Scene>(std::move(cap));
@@ -97,8 +103,9 @@ void expectCapSearchedExactly(double crease) {
   auto frame = rig.renderer->render(pose, 320, 240, specula::testing::virtualObjects());
   ASSERT_TRUE(frame) << frame.error();
   const bench::ReflectionPointErrors errors = bench::measureReflectionPoints(*rig.renderer, pose, *frame);
-  std::printf("crease %.3f rad: %zu points, max %.4f px; %d reflected where none is, %d hidden although reflected\n", crease,
-              errors.pixels.size(), errors.percentile(1.0), errors.exactHiddenButSearchVisible, errors.searchHiddenButExactVisible);
+  std::printf("crease %.3f rad: %zu points, max %.4f px; %d reflected where none is, %d hidden although reflected\n",
+              crease, errors.pixels.size(), errors.percentile(1.0), errors.exactHiddenButSearchVisible,
+              errors.searchHiddenButExactVisible);
   EXPECT_GT(errors.pixels.size(), 2000u);
   EXPECT_LE(errors.percentile(1.0), 0.5);
   EXPECT_EQ(errors.exactHiddenButSearchVisible, 0);

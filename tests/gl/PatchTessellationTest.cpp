@@ -85,7 +85,8 @@ TEST(PatchTessellation, TriangleCountFollowsProjectedSize) {
   EXPECT_EQ(views[0].measure.patches, 32u);
   // Half the distance, twice the size on screen in each direction: about four times the triangles
   // while the patches are well above one segment a side.
-  const double nearRatio = static_cast<double>(views[0].measure.triangles) / static_cast<double>(views[1].measure.triangles);
+  const double nearRatio =
+      static_cast<double>(views[0].measure.triangles) / static_cast<double>(views[1].measure.triangles);
   EXPECT_GT(nearRatio, 2.5);
   EXPECT_LT(nearRatio, 5.0);
   EXPECT_GT(views[1].measure.triangles, views[2].measure.triangles);

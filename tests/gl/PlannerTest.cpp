@@ -34,14 +34,15 @@ struct PlannedAndEverything {
 };
 
 // The same pose rendered with the planner and without, each from cold seeds.
-PlannedAndEverything renderBoth(const std::shared_ptr<const scene::Scene>& scene, passes::ReflectionSettings settings = {},
-                                glm::ivec2 size = {kWidth, kHeight}) {
+PlannedAndEverything renderBoth(const std::shared_ptr<const scene::Scene>& scene,
+                                passes::ReflectionSettings settings = {}, glm::ivec2 size = {kWidth, kHeight}) {
   PlannedAndEverything result;
   specula::testing::Rig rig = specula::testing::makeRig(scene);
   if (!rig.renderer) return result;
   render::Renderer* renderer = rig.renderer.get();
   const scene::ScenePose pose = scene::ScenePose::at(*scene, 0.0);
-  for (auto [scope, frame] : {std::pair{passes::PlanScope::Needed, &result.needed}, {passes::PlanScope::Everything, &result.everything}}) {
+  for (auto [scope, frame] :
+       {std::pair{passes::PlanScope::Needed, &result.needed}, {passes::PlanScope::Everything, &result.everything}}) {
     settings.plan = scope;
     settings.rayCast = passes::RayCastRule::Never;  // the planner's cuts are what is compared: both frames search
     renderer->resetCoherence();
@@ -96,7 +97,8 @@ std::string sphereWithAHiddenBall(const std::string& mirror) {
       {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
       {"name": "red", "color": "#d02020"}],
     "objects": [{"name": "mirror-sphere", "mesh": "mirror-sphere", "material": "mirror", "reflected": false,
-                 "mirror": )" + mirror + R"(},
+                 "mirror": )" +
+         mirror + R"(},
       {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]},
       {"name": "hidden-ball", "mesh": "ball", "material": "red", "translation": [-0.255, -0.766, -0.894]},
       {"name": "visible-ball", "mesh": "ball", "material": "red", "translation": [1.3, -0.6, 0.8]}],
@@ -122,8 +124,8 @@ void expectTheHiddenBallLeftOutAndTheSamePicture(const std::shared_ptr<const sce
 }  // namespace
 
 TEST(Planner, AnObjectInAnAnalyticSpheresShadowIsLeftOutAndThePictureStays) {
-  expectTheHiddenBallLeftOutAndTheSamePicture(
-      parse(sphereWithAHiddenBall(R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})")));
+  expectTheHiddenBallLeftOutAndTheSamePicture(parse(
+      sphereWithAHiddenBall(R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})")));
 }
 
 TEST(Planner, AnObjectInAMeshSpheresShadowIsLeftOutAndThePictureStays) {
@@ -137,13 +139,15 @@ TEST(Planner, ObjectsWhoseImageIsUnderTheErrorBudgetAreLeftOutAndMoveAtMostAPixe
   constexpr int kBeacons = 16;
   for (int i = 0; i < kBeacons; ++i) {
     const float angle = 0.4f * static_cast<float>(i), distance = 30.0f + 20.0f * static_cast<float>(i % 5) / 4.0f;
-    beacons += R"(, {"name": "beacon-)" + std::to_string(i) + R"(", "mesh": "beacon", "material": "red", "translation": [)" +
-               std::to_string(distance * std::sin(angle)) + ", " + std::to_string(0.5f * static_cast<float>(i % 4)) + ", " +
-               std::to_string(distance * std::cos(angle)) + "]}";
+    beacons += R"(, {"name": "beacon-)" + std::to_string(i) +
+               R"(", "mesh": "beacon", "material": "red", "translation": [)" +
+               std::to_string(distance * std::sin(angle)) + ", " + std::to_string(0.5f * static_cast<float>(i % 4)) +
+               ", " + std::to_string(distance * std::cos(angle)) + "]}";
   }
   // The declared sphere, and the same mesh without it: the rule reads bounds only.
-  for (const std::string mirror : {R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})",
-                                   R"({"curvature": "convex"})"}) {
+  for (const std::string mirror :
+       {R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})",
+        R"({"curvature": "convex"})"}) {
     const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#000000",
       "camera": {"eye": [1, 3, 3.5], "target": [0, -0.3, 0], "fov": 40},
       "meshes": [{"name": "mirror-sphere", "primitive": {"type": "sphere", "radius": 1, "slices": 64, "stacks": 32}},
@@ -153,7 +157,8 @@ TEST(Planner, ObjectsWhoseImageIsUnderTheErrorBudgetAreLeftOutAndMoveAtMostAPixe
         {"name": "checker", "color": "#e6e6e6", "unlit": true, "checker": {"color": "#191919", "cells_per_unit": 1}},
         {"name": "red", "color": "#ff2020", "unlit": true}],
       "objects": [{"name": "mirror-sphere", "mesh": "mirror-sphere", "material": "mirror", "reflected": false,
-                   "mirror": )" + mirror + R"(},
+                   "mirror": )" +
+                             mirror + R"(},
         {"name": "floor", "mesh": "floor", "material": "checker", "translation": [0, -1, 0]})" +
                              beacons + R"(],
       "lights": [{"type": "directional", "direction": [1, 3, 2], "intensity": 0.9}]})");
@@ -177,8 +182,9 @@ TEST(Planner, ObjectsWhoseImageIsUnderTheErrorBudgetAreLeftOutAndMoveAtMostAPixe
 // the pixels are ray-cast; the picture stays as close to the ray tracer as the searched one.
 TEST(Planner, AMirrorReflectingOnlyFarMountainsUsesTheEnvironmentMapAndRayCastsItsRim) {
   // The declared sphere, and the same mesh without it (curvature from its edges, not the quadric).
-  for (const std::string mirror : {R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})",
-                                   R"({"curvature": "convex"})"}) {
+  for (const std::string mirror :
+       {R"({"curvature": "convex", "analytic": {"sphere": {"center": [0, 0, 0], "radius": 1}}})",
+        R"({"curvature": "convex"})"}) {
     const auto scene = parse(R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
       "camera": {"eye": [1.0, 1.5, 5.7], "target": [0, 0, 0], "fov": 40},
       "meshes": [{"name": "ball", "primitive": {"type": "sphere", "radius": 1, "slices": 128, "stacks": 64}},
@@ -186,7 +192,8 @@ TEST(Planner, AMirrorReflectingOnlyFarMountainsUsesTheEnvironmentMapAndRayCastsI
       "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9}, {"name": "red", "color": "#d02020"},
         {"name": "green", "color": "#20b040"}, {"name": "blue", "color": "#3050e0"}, {"name": "ground", "color": "#806040"}],
       "objects": [{"name": "ball", "mesh": "ball", "material": "chrome",
-                   "mirror": )" + mirror + R"(},
+                   "mirror": )" +
+                             mirror + R"(},
         {"name": "north", "mesh": "mountain", "material": "red", "translation": [0, 0, -1000]},
         {"name": "east", "mesh": "mountain", "material": "green", "translation": [1000, 30, 0]},
         {"name": "south", "mesh": "mountain", "material": "blue", "translation": [150, -90, 1000]},
@@ -204,14 +211,18 @@ TEST(Planner, AMirrorReflectingOnlyFarMountainsUsesTheEnvironmentMapAndRayCastsI
     ASSERT_EQ(planned->plan.size(), 1u);
     EXPECT_EQ(planned->plan[0].method, passes::PartMethod::EnvironmentMap);
     EXPECT_EQ(planned->search.searched, 0u);
-    EXPECT_GT(planned->plan[0].uncoveredRayCast, 0u) << "the rim, where the lookup would be off by more than the budget";
+    EXPECT_GT(planned->plan[0].uncoveredRayCast, 0u)
+        << "the rim, where the lookup would be off by more than the budget";
     settings.plan = passes::PlanScope::Everything;
     auto searched = rig.renderer->render(pose, 640, 480, settings);
     ASSERT_TRUE(searched) << searched.error();
     const auto cube = specula::testing::mismatchAgainstRayTracer(scene, pose, *planned);
     const auto search = specula::testing::mismatchAgainstRayTracer(scene, pose, *searched);
-    std::printf("far mountains, mirror %s: environment map %.3f %%, %zu rim pixels ray-cast; searched %.3f %% of %zu mirror pixels\n",
-                mirror.c_str(), 100.0 * cube.share, planned->plan[0].uncoveredRayCast, 100.0 * search.share, search.mirrorPixels);
+    std::printf(
+        "far mountains, mirror %s: environment map %.3f %%, %zu rim pixels ray-cast; searched %.3f %% of %zu mirror "
+        "pixels\n",
+        mirror.c_str(), 100.0 * cube.share, planned->plan[0].uncoveredRayCast, 100.0 * search.share,
+        search.mirrorPixels);
     EXPECT_GT(cube.mirrorPixels, 10000u);
     EXPECT_LE(cube.share, search.share + 0.002);
   }
@@ -255,7 +266,8 @@ TEST(Planner, FlatPartsLeaveOutWhatIsBehindThemAndPartsFacingAwaySearchNothing) 
       specula::testing::mismatchAgainstRayTracer(scene, scene::ScenePose::at(*scene, 0.0), frames.needed);
   EXPECT_GT(mismatch.mirrorPixels, 10000u);
   std::printf("mirror cube, planned: %.2f %% of %zu mirror pixels differ from the ray tracer; %u searches against %u\n",
-              100.0 * mismatch.share, mismatch.mirrorPixels, frames.needed.search.searched, frames.everything.search.searched);
+              100.0 * mismatch.share, mismatch.mirrorPixels, frames.needed.search.searched,
+              frames.everything.search.searched);
   EXPECT_LE(mismatch.share, 0.01) << "the planned frame against the ray tracer";
 }
 
@@ -286,7 +298,8 @@ TEST(Planner, MirrorsWhereCastingIsPredictedCheaperAreRayCastAndMatchTheRayTrace
     everything.plan = passes::PlanScope::Everything;
     auto searched = (*renderer)->render(pose, 640, 480, everything);
     ASSERT_TRUE(searched) << searched.error();
-    for (const render::MirrorPlanSummary& part : searched->plan) EXPECT_EQ(part.method, passes::PartMethod::VirtualObjects) << name;
+    for (const render::MirrorPlanSummary& part : searched->plan)
+      EXPECT_EQ(part.method, passes::PartMethod::VirtualObjects) << name;
     EXPECT_GT(searched->search.searched, 0u) << name << ": --plan everything searches";
   }
 }
@@ -303,14 +316,18 @@ TEST(Planner, ObjectsPlannedUnsplitSkipTheRoundsAndThePictureStays) {
     const PlannedAndEverything frames = renderBoth(scene, settings, {320, 240});
     const passes::TessellationStatistics& planned = frames.needed.tessellation;
     const passes::TessellationStatistics& rounds = frames.everything.tessellation;
-    std::printf("%s at %g px: %u objects planned unsplit; triangles into round 0 %u against %u, midpoint searches %u against %u, "
-                "%zu pixels differ\n",
-                name, static_cast<double>(threshold), planned.predictedUnsplitObjects, planned.trianglesPerRound.at(0),
-                rounds.trianglesPerRound.at(0), planned.midpointSearches.searched, rounds.midpointSearches.searched, frames.differingPixels);
+    std::printf(
+        "%s at %g px: %u objects planned unsplit; triangles into round 0 %u against %u, midpoint searches %u against "
+        "%u, "
+        "%zu pixels differ\n",
+        name, static_cast<double>(threshold), planned.predictedUnsplitObjects, planned.trianglesPerRound.at(0),
+        rounds.trianglesPerRound.at(0), planned.midpointSearches.searched, rounds.midpointSearches.searched,
+        frames.differingPixels);
     EXPECT_GT(planned.predictedUnsplitObjects, 0u) << name;
     EXPECT_EQ(rounds.predictedUnsplitObjects, 0u) << name;
     EXPECT_EQ(planned.inputTriangles, rounds.inputTriangles) << name;
-    EXPECT_LT(planned.trianglesPerRound.at(0), rounds.trianglesPerRound.at(0)) << name << ": fewer triangles enter round 0";
+    EXPECT_LT(planned.trianglesPerRound.at(0), rounds.trianglesPerRound.at(0))
+        << name << ": fewer triangles enter round 0";
     EXPECT_LE(frames.differingPixels, 2u) << name;
   }
 }
@@ -321,7 +338,8 @@ TEST(Planner, ObjectsPlannedUnsplitSkipTheRoundsAndThePictureStays) {
 TEST(Planner, AFlatMirrorSeenEdgeOnOrGrazingKeepsThePicture) {
   for (const float eyeHeight : {0.5f, 0.52f, 2.0f}) {
     const std::string json = R"({"specula_scene": 1, "ambient": [0.2, 0.2, 0.2], "background": "#203040",
-      "camera": {"eye": [0, )" + std::to_string(eyeHeight) + R"(, 4], "target": [0, 0.5, 0], "fov": 45},
+      "camera": {"eye": [0, )" +
+                             std::to_string(eyeHeight) + R"(, 4], "target": [0, 0.5, 0], "fov": 45},
       "meshes": [{"name": "panel", "primitive": {"type": "grid", "size": [3, 3], "cells": [1, 1]}},
         {"name": "ball", "primitive": {"type": "sphere", "radius": 0.3, "slices": 32, "stacks": 16}}],
       "materials": [{"name": "chrome", "color": "#101010", "reflectivity": 0.9}, {"name": "red", "color": "#d02020"},
@@ -340,9 +358,11 @@ TEST(Planner, AFlatMirrorSeenEdgeOnOrGrazingKeepsThePicture) {
       EXPECT_GE(part.culledObjects, 1u) << "the ball below the panel is behind it";
     }
     const specula::testing::MirrorMismatch mismatch = defaultFrameAgainstRayTracer(scene).mismatch;
-    std::printf("flat panel, eye at height %.2f: %zu pixels differ from --plan everything; %.2f %% of %zu mirror pixels from the "
-                "ray tracer\n",
-                static_cast<double>(eyeHeight), frames.differingPixels, 100.0 * mismatch.share, mismatch.mirrorPixels);
+    std::printf(
+        "flat panel, eye at height %.2f: %zu pixels differ from --plan everything; %.2f %% of %zu mirror pixels from "
+        "the "
+        "ray tracer\n",
+        static_cast<double>(eyeHeight), frames.differingPixels, 100.0 * mismatch.share, mismatch.mirrorPixels);
     if (mismatch.mirrorPixels > 100) {
       EXPECT_LE(mismatch.share, 0.01);
     }
@@ -368,7 +388,8 @@ TEST(Planner, AHugeMirrorAroundTheEyesBoundsKeepsThePicture) {
   const PlannedAndEverything frames = renderBoth(scene);
   ASSERT_EQ(frames.needed.plan.size(), 1u);
   const render::MirrorPlanSummary& part = frames.needed.plan[0];
-  EXPECT_EQ(part.projectedPixels, static_cast<double>(kWidth) * kHeight) << "the eye inside its bounds: it may fill the frame";
+  EXPECT_EQ(part.projectedPixels, static_cast<double>(kWidth) * kHeight)
+      << "the eye inside its bounds: it may fill the frame";
   EXPECT_EQ(part.belowBudgetObjects, 0u);
   EXPECT_EQ(part.searchedObjects, 3u);
   EXPECT_EQ(frames.needed.tessellation.predictedUnsplitObjects, 0u);
@@ -377,8 +398,11 @@ TEST(Planner, AHugeMirrorAroundTheEyesBoundsKeepsThePicture) {
   const DefaultFrame planned = defaultFrameAgainstRayTracer(scene);
   ASSERT_EQ(planned.frame.plan.size(), 1u);
   const specula::testing::MirrorMismatch& mismatch = planned.mismatch;
-  std::printf("huge mirror: %zu pixels differ from --plan everything; planned (%s) %.2f %% of %zu mirror pixels from the ray tracer\n",
-              frames.differingPixels, passes::partMethodName(planned.frame.plan[0].method), 100.0 * mismatch.share, mismatch.mirrorPixels);
+  std::printf(
+      "huge mirror: %zu pixels differ from --plan everything; planned (%s) %.2f %% of %zu mirror pixels from the ray "
+      "tracer\n",
+      frames.differingPixels, passes::partMethodName(planned.frame.plan[0].method), 100.0 * mismatch.share,
+      mismatch.mirrorPixels);
   EXPECT_GT(mismatch.mirrorPixels, 50000u);
   EXPECT_LE(mismatch.share, 0.01);
 }

@@ -13,7 +13,9 @@
 namespace specula::testing {
 namespace {
 
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
+double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
 
 struct HierarchyCase {
   const char* scene;
@@ -39,16 +41,19 @@ TEST_P(RayHierarchy, EveryNodeBoundsItsChildren) {
     const auto coarser = rig.renderer->readRayHierarchyLevel(level);
     ASSERT_EQ(coarser.size, glm::max(finer.size / 2, glm::ivec2(1))) << "GL mip sizes";
     const std::size_t layerTexels = static_cast<std::size_t>(finer.size.x) * static_cast<std::size_t>(finer.size.y);
-    const std::size_t coarserLayerTexels = static_cast<std::size_t>(coarser.size.x) * static_cast<std::size_t>(coarser.size.y);
+    const std::size_t coarserLayerTexels =
+        static_cast<std::size_t>(coarser.size.x) * static_cast<std::size_t>(coarser.size.y);
     int children = 0, outsideSphere = 0, outsideCone = 0, orphans = 0;
     for (std::size_t i = 0; i < finer.spheres.size(); ++i) {
       const glm::dvec4 sphere(finer.spheres[i]), cone(finer.cones[i]);
       if (sphere.w < 0.0) continue;
       const std::size_t layer = i / layerTexels, texel = i % layerTexels;
-      const int x = static_cast<int>(texel % static_cast<std::size_t>(finer.size.x)), y = static_cast<int>(texel / static_cast<std::size_t>(finer.size.x));
+      const int x = static_cast<int>(texel % static_cast<std::size_t>(finer.size.x)),
+                y = static_cast<int>(texel / static_cast<std::size_t>(finer.size.x));
       // The last texel of an odd row or column has three children.
       const glm::ivec2 parent = glm::min(glm::ivec2(x, y) / 2, coarser.size - 1);
-      const std::size_t p = layer * coarserLayerTexels + static_cast<std::size_t>(parent.y) * static_cast<std::size_t>(coarser.size.x) +
+      const std::size_t p = layer * coarserLayerTexels +
+                            static_cast<std::size_t>(parent.y) * static_cast<std::size_t>(coarser.size.x) +
                             static_cast<std::size_t>(parent.x);
       const glm::dvec4 parentSphere(coarser.spheres[p]), parentCone(coarser.cones[p]);
       ++children;
@@ -58,7 +63,8 @@ TEST_P(RayHierarchy, EveryNodeBoundsItsChildren) {
       }
       const double slack = 1e-5 * (1.0 + parentSphere.w);  // float rounding
       outsideSphere += glm::length(glm::dvec3(sphere) - glm::dvec3(parentSphere)) + sphere.w > parentSphere.w + slack;
-      outsideCone += parentCone.w < 3.14159 && angleBetween(glm::dvec3(cone), glm::dvec3(parentCone)) + cone.w > parentCone.w + 1e-4;
+      outsideCone += parentCone.w < 3.14159 &&
+                     angleBetween(glm::dvec3(cone), glm::dvec3(parentCone)) + cone.w > parentCone.w + 1e-4;
     }
     EXPECT_GT(children, 0) << "level " << level;
     EXPECT_EQ(outsideSphere, 0) << "level " << level << ": spheres that do not bound their children";
@@ -89,12 +95,14 @@ TEST_P(RayHierarchy, EveryVisibleVertexLiesInACone) {
     ++visible;
     visibleEnlarged += enlarged;
   }
-  std::printf("%s t=%.0f: %zu visible vertices, %zu of them enlarged; %zu hidden enlarged; steps mean %.1f\n", GetParam().scene,
-              GetParam().time, visible, visibleEnlarged, hiddenEnlarged,
-              static_cast<double>(frame->search.totalSteps) / static_cast<double>(std::max<std::size_t>(frame->search.searched, 1)));
+  std::printf("%s t=%.0f: %zu visible vertices, %zu of them enlarged; %zu hidden enlarged; steps mean %.1f\n",
+              GetParam().scene, GetParam().time, visible, visibleEnlarged, hiddenEnlarged,
+              static_cast<double>(frame->search.totalSteps) /
+                  static_cast<double>(std::max<std::size_t>(frame->search.searched, 1)));
   EXPECT_GT(visible, 100u);
   EXPECT_EQ(visibleEnlarged, 0u);
-  EXPECT_GE(frame->search.enlarged + frame->search.inNoCone, visibleEnlarged + hiddenEnlarged) << "the statistics count them";
+  EXPECT_GE(frame->search.enlarged + frame->search.inNoCone, visibleEnlarged + hiddenEnlarged)
+      << "the statistics count them";
 }
 
 INSTANTIATE_TEST_SUITE_P(Mirrors, RayHierarchy,
@@ -102,7 +110,8 @@ INSTANTIATE_TEST_SUITE_P(Mirrors, RayHierarchy,
                                            HierarchyCase{"mesh-sphere", 11.0}, HierarchyCase{"kitchen", 0.0},
                                            HierarchyCase{"kitchen", 10.0}),
                          [](const auto& test) {
-                           std::string name = std::string(test.param.scene) + "_t" + std::to_string(static_cast<int>(test.param.time));
+                           std::string name =
+                               std::string(test.param.scene) + "_t" + std::to_string(static_cast<int>(test.param.time));
                            std::erase(name, '-');
                            return name;
                          });

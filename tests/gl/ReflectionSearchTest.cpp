@@ -27,7 +27,6 @@ using specula::testing::searchName;
 using specula::testing::virtualObjects;
 using specula::testing::withSearch;
 
-
 class SearchAccuracyTest : public ::testing::TestWithParam<std::tuple<const char*, passes::SearchStrategy>> {};
 
 // Bounds measured on llvmpipe at 640×480 (p50 ≈ 1e-5 px, p99 ≤ 4e-5 px, max ≤ 0.005 px), with margin:
@@ -58,7 +57,8 @@ INSTANTIATE_TEST_SUITE_P(AnalyticSpheres, SearchAccuracyTest,
                          ::testing::Combine(::testing::Values("checker-sphere", "teapot-table", "quad", "ants"),
                                             ::testing::ValuesIn(specula::testing::kSearchStrategies)),
                          [](const auto& param) {
-                           std::string name = std::string(std::get<0>(param.param)) + "_" + searchName(std::get<1>(param.param));
+                           std::string name =
+                               std::string(std::get<0>(param.param)) + "_" + searchName(std::get<1>(param.param));
                            std::erase(name, '-');
                            return name;
                          });
@@ -112,7 +112,8 @@ TEST(ReflectionSearch, HiddenVerticesAreFlaggedAndStillGetAFiniteVirtualPosition
     EXPECT_EQ(result.virtualPosition.w, 1.0f);
     for (int axis = 0; axis < 3; ++axis) EXPECT_TRUE(std::isfinite(result.virtualPosition[axis]));
     // Reflected from the silhouette point in the plane of eye, centre and vertex, on its side.
-    const glm::dvec3 r(result.reflectionPoint), vertex(pose.objectToWorld[range.object] * glm::vec4(mesh.vertices[v].position, 1.0f));
+    const glm::dvec3 r(result.reflectionPoint),
+        vertex(pose.objectToWorld[range.object] * glm::vec4(mesh.vertices[v].position, 1.0f));
     EXPECT_NEAR(glm::length(r - center), radius, 1e-4 * radius);
     EXPECT_NEAR(glm::dot(glm::normalize(r - eye), glm::normalize(r - center)), 0.0, 1e-4) << "not on the silhouette";
     const glm::dvec3 planeNormal = glm::normalize(glm::cross(center - eye, vertex - eye));
@@ -142,7 +143,8 @@ TEST(ReflectionSearch, ColdStartsClimbThePyramidInFewStepsAt1280x720) {
   ASSERT_TRUE(rig.renderer);
   passes::ReflectionSettings settings;
   settings.coherence = false;
-  auto frame = rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), 0.0), 1280, 720, virtualObjects(settings));
+  auto frame =
+      rig.renderer->render(scene::ScenePose::at(rig.renderer->scene(), 0.0), 1280, 720, virtualObjects(settings));
   ASSERT_TRUE(frame);
   EXPECT_EQ(frame->search.coldStarts, frame->search.searched);
   // A naive walk from the mirror centre needs ~110 windows here (issue #3); the pyramid about 20.
@@ -161,7 +163,8 @@ TEST(ReflectionSearch, PartlyVisibleMirrorReflectsCorrectlyAtTheScreenEdge) {
   auto frame = rig.renderer->render(pose, 640, 480, virtualObjects());
   ASSERT_TRUE(frame);
   const glm::dvec2 center = toPixels(frame->view, glm::vec3(0.0f), 640, 480);
-  ASSERT_TRUE(center.x > -5.0 && center.x < 40.0) << "the test needs the mirror cut by the left edge, centre at " << center.x;
+  ASSERT_TRUE(center.x > -5.0 && center.x < 40.0)
+      << "the test needs the mirror cut by the left edge, centre at " << center.x;
   const auto errors = measureReflectionPoints(*rig.renderer, pose, *frame);
   ASSERT_GT(errors.pixels.size(), 20u);
   EXPECT_LE(errors.percentile(1.0), 0.05);
@@ -203,7 +206,8 @@ PathJumps trackVirtualVertices(render::Renderer& renderer, double framesPerSecon
       largest = std::max(largest, move);
       const auto exactNow = exact.find(slot), exactBefore = previousExact.find(slot);
       if (exactNow != exact.end() && exactBefore != previousExact.end())
-        jumps.beyondTruth = std::max(jumps.beyondTruth, std::abs(move - glm::length(exactNow->second - exactBefore->second)));
+        jumps.beyondTruth =
+            std::max(jumps.beyondTruth, std::abs(move - glm::length(exactNow->second - exactBefore->second)));
       ++jumps.compared;
     }
     previous = current;
@@ -235,9 +239,9 @@ TEST(ReflectionSearch, NoVirtualVertexJumpsAlongASmoothCameraPath) {
   EXPECT_LE(at60.visible, 2.0);
   EXPECT_LE(at60.beyondTruth, 0.05);
   EXPECT_LE(at240.beyondTruth, 0.05);
-  for (const auto& [name, slow, fast] : {std::tuple{"visible", at60.visible, at240.visible},
-                                         std::tuple{"hidden", at60.hidden, at240.hidden},
-                                         std::tuple{"changing side", at60.changedSide, at240.changedSide}}) {
+  for (const auto& [name, slow, fast] :
+       {std::tuple{"visible", at60.visible, at240.visible}, std::tuple{"hidden", at60.hidden, at240.hidden},
+        std::tuple{"changing side", at60.changedSide, at240.changedSide}}) {
     EXPECT_LE(fast, 2.0) << name;
     EXPECT_LE(fast, 0.35 * slow) << name << " vertices jump: their moves do not shrink with the frame interval";
   }
@@ -255,14 +259,15 @@ TEST(ReflectionSearch, TheHierarchySearchFollowsTheExactMotionAsCloselyAsTheCros
   for (passes::SearchStrategy search : specula::testing::kSearchStrategies) {
     rig.renderer->resetCoherence();
     jumps[search] = trackVirtualVertices(*rig.renderer, 60.0, 12, withSearch(search));
-    std::printf("%s on the mesh sphere: visible moves up to %.3f px, %.4f px beyond the exact motion\n", searchName(search).c_str(),
-                jumps[search].visible, jumps[search].beyondTruth);
+    std::printf("%s on the mesh sphere: visible moves up to %.3f px, %.4f px beyond the exact motion\n",
+                searchName(search).c_str(), jumps[search].visible, jumps[search].beyondTruth);
     ASSERT_GT(jumps[search].compared, 2000u);
   }
   const PathJumps& crosshair = jumps[passes::SearchStrategy::Crosshair];
   for (passes::SearchStrategy search : {passes::SearchStrategy::Hierarchy, passes::SearchStrategy::ExplosionMap}) {
     EXPECT_LE(jumps[search].beyondTruth, std::max(0.25, 1.5 * crosshair.beyondTruth)) << searchName(search);
-    EXPECT_LE(jumps[search].visible, 1.5 * crosshair.visible) << searchName(search) << ": moves no larger than the crosshair search's";
+    EXPECT_LE(jumps[search].visible, 1.5 * crosshair.visible)
+        << searchName(search) << ": moves no larger than the crosshair search's";
   }
 }
 
@@ -305,7 +310,8 @@ TEST(ReflectionSearch, CheckerSphereFrameAgreesWithTheRayTracedReference) {
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx)
           if (x + dx >= 0 && x + dx < 320 && y + dy >= 0 && y + dy < 240)
-            neighbourHasIt = neighbourHasIt || sameColour(i, static_cast<std::size_t>(y + dy) * 320 + static_cast<std::size_t>(x + dx));
+            neighbourHasIt = neighbourHasIt ||
+                             sameColour(i, static_cast<std::size_t>(y + dy) * 320 + static_cast<std::size_t>(x + dx));
       ASSERT_TRUE(neighbourHasIt) << "pixel (" << x << ", " << y << ") outside the mirror differs from the reference";
       ++onAnEdge;
     }

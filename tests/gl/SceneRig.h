@@ -32,7 +32,8 @@ inline passes::ReflectionSettings virtualObjects(passes::ReflectionSettings sett
 inline const std::vector<passes::SearchStrategy> kSearchStrategies(std::begin(passes::kSearchStrategies),
                                                                    std::end(passes::kSearchStrategies));
 
-inline passes::ReflectionSettings withSearch(passes::SearchStrategy search, passes::ReflectionSettings settings = virtualObjects()) {
+inline passes::ReflectionSettings withSearch(passes::SearchStrategy search,
+                                             passes::ReflectionSettings settings = virtualObjects()) {
   settings.search = search;
   settings.explosionRefine = search == passes::SearchStrategy::ExplosionMap;
   return settings;
@@ -88,8 +89,8 @@ inline reference::RayTracerOptions tracedLike(const render::RenderedFrame& frame
 }
 
 // The frame against the ray tracer's image of `truth` at the same pose (and size and samples).
-inline MirrorMismatch mismatchAgainstRayTracer(const std::shared_ptr<const scene::Scene>& truth, const scene::ScenePose& pose,
-                                               const render::RenderedFrame& frame) {
+inline MirrorMismatch mismatchAgainstRayTracer(const std::shared_ptr<const scene::Scene>& truth,
+                                               const scene::ScenePose& pose, const render::RenderedFrame& frame) {
   auto tracer = reference::RayTracer::create(truth);
   EXPECT_TRUE(tracer) << tracer.error();
   if (!tracer) return {};

@@ -52,7 +52,8 @@ passes::ReflectionSettings tessellation(TessellationMode mode, TessellationMetri
   return settings;
 }
 
-render::RenderedFrame renderFrame(Rig& rig, const passes::ReflectionSettings& settings, int width = 320, int height = 240) {
+render::RenderedFrame renderFrame(Rig& rig, const passes::ReflectionSettings& settings, int width = 320,
+                                  int height = 240) {
   auto frame = rig.renderer->render(rig.pose, width, height, specula::testing::virtualObjects(settings));
   EXPECT_TRUE(frame) << frame.error();
   return frame ? std::move(frame.value()) : render::RenderedFrame{};
@@ -71,7 +72,8 @@ std::array<int, 3> backgroundInMirror(const std::vector<std::uint8_t>& rgba, con
 
 // Mirror pixels (not on the mirror's outline) where the reference shows the plane and we show
 // the background reflection: holes in the virtual geometry.
-int holesInReflection(const std::vector<std::uint8_t>& ours, const reference::ReferenceImage& truth, int width, int height) {
+int holesInReflection(const std::vector<std::uint8_t>& ours, const reference::ReferenceImage& truth, int width,
+                      int height) {
   const std::array<int, 3> background = backgroundInMirror(truth.rgba, truth.mirrorMask);
   const auto isBackground = [&](const std::vector<std::uint8_t>& rgba, std::size_t i) {
     for (int c = 0; c < 3; ++c)
@@ -103,7 +105,8 @@ TEST(Tessellation, ThresholdZeroGivesExactlyFullTessellation) {
         const passes::TessellationStatistics& t = frame.tessellation;
         ASSERT_EQ(t.inputTriangles, 2u);
         ASSERT_EQ(t.trianglesPerRound.size(), static_cast<std::size_t>(level + 1));
-        for (int round = 0; round <= level; ++round) EXPECT_EQ(t.trianglesPerRound[round], 2u * power4(round)) << "round " << round;
+        for (int round = 0; round <= level; ++round)
+          EXPECT_EQ(t.trianglesPerRound[round], 2u * power4(round)) << "round " << round;
         EXPECT_EQ(t.finishedTriangles, 2u * power4(level)) << "level " << level;
         EXPECT_FALSE(t.capped);
       }
@@ -128,8 +131,9 @@ TEST(Tessellation, CountsNeverExceedTheLevelBoundAndFollowSettingsChangedAtRunTi
   ASSERT_TRUE(rig.renderer);
   std::map<std::uint32_t, int> distinctCounts;
   for (TessellationMode mode : {TessellationMode::Paper, TessellationMode::CrackFree}) {
-    for (auto [metric, threshold] : {std::pair{TessellationMetric::Angle, 0.01f}, std::pair{TessellationMetric::Angle, 0.001f},
-                                     std::pair{TessellationMetric::Pixels, 2.0f}, std::pair{TessellationMetric::Pixels, 0.5f}}) {
+    for (auto [metric, threshold] :
+         {std::pair{TessellationMetric::Angle, 0.01f}, std::pair{TessellationMetric::Angle, 0.001f},
+          std::pair{TessellationMetric::Pixels, 2.0f}, std::pair{TessellationMetric::Pixels, 0.5f}}) {
       for (int level : {1, 3}) {
         const auto frame = renderFrame(rig, tessellation(mode, metric, threshold, level));
         const passes::TessellationStatistics& t = frame.tessellation;
@@ -145,7 +149,6 @@ TEST(Tessellation, CountsNeverExceedTheLevelBoundAndFollowSettingsChangedAtRunTi
   EXPECT_GE(distinctCounts.size(), 8u) << "threshold, level and mode must change the result from frame to frame";
 }
 
-
 TEST(Tessellation, NeitherModeLeavesMoreThanATraceOfHolesInACoarsePlanesReflection) {
   Rig rig = makeRig("quad");
   ASSERT_TRUE(rig.renderer);
@@ -153,7 +156,8 @@ TEST(Tessellation, NeitherModeLeavesMoreThanATraceOfHolesInACoarsePlanesReflecti
   const auto truth = referenceImage(rig, kWidth, kHeight);
   ASSERT_TRUE(truth);
   std::map<std::string, int> holes;
-  for (auto [name, mode] : {std::pair{"paper", TessellationMode::Paper}, std::pair{"crack-free", TessellationMode::CrackFree}}) {
+  for (auto [name, mode] :
+       {std::pair{"paper", TessellationMode::Paper}, std::pair{"crack-free", TessellationMode::CrackFree}}) {
     const auto frame = renderFrame(rig, tessellation(mode, TessellationMetric::Pixels, 1.0f, 5), kWidth, kHeight);
     holes[name] = holesInReflection(frame.rgba, *truth, kWidth, kHeight);
   }
@@ -161,8 +165,10 @@ TEST(Tessellation, NeitherModeLeavesMoreThanATraceOfHolesInACoarsePlanesReflecti
   // while virtual triangles were drawn as they lie; dilated by 2 px and kept only where each pixel's
   // reflected ray meets the triangle itself, neither mode leaves more than a trace (measured: paper
   // 0, crack-free 11 px along one edge whose image bends between its searched midpoints; 1 at 0.5 px).
-  const std::size_t mirrorPixels = static_cast<std::size_t>(std::count(truth->mirrorMask.begin(), truth->mirrorMask.end(), 1));
-  std::printf("holes in the reflection: paper %d, crack-free %d of %zu mirror pixels\n", holes["paper"], holes["crack-free"], mirrorPixels);
+  const std::size_t mirrorPixels =
+      static_cast<std::size_t>(std::count(truth->mirrorMask.begin(), truth->mirrorMask.end(), 1));
+  std::printf("holes in the reflection: paper %d, crack-free %d of %zu mirror pixels\n", holes["paper"],
+              holes["crack-free"], mirrorPixels);
   EXPECT_LE(holes["paper"], static_cast<int>(mirrorPixels / 2000));
   EXPECT_LE(holes["crack-free"], static_cast<int>(mirrorPixels / 2000));
 }
@@ -174,8 +180,10 @@ TEST(Tessellation, CheckerSphereMismatchFallsAsTheThresholdFalls) {
   const auto truth = referenceImage(rig, kWidth, kHeight);
   ASSERT_TRUE(truth);
   std::vector<double> mismatch;
-  std::vector<passes::ReflectionSettings> settings = {tessellation(TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0)};
-  for (float threshold : {4.0f, 1.0f, 0.25f}) settings.push_back(tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, threshold, 5));
+  std::vector<passes::ReflectionSettings> settings = {
+      tessellation(TessellationMode::None, TessellationMetric::Pixels, 1.0f, 0)};
+  for (float threshold : {4.0f, 1.0f, 0.25f})
+    settings.push_back(tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, threshold, 5));
   for (const passes::ReflectionSettings& setting : settings) {
     mismatch.push_back(specula::testing::mismatchAgainst(*truth, renderFrame(rig, setting, kWidth, kHeight)).share);
   }
@@ -206,11 +214,13 @@ TEST(Tessellation, ClassifyingThenSearchingSplitsWhatTheSingleKernelDid) {
     Rig rig = makeRig(expected.scene);
     ASSERT_TRUE(rig.renderer);
     const bool measuredDriver = rig.context->info().renderer.find("llvmpipe") != std::string::npos;
-    const auto expectCount = [&](std::uint32_t actual, std::uint32_t wanted, double tolerance, const std::string& what) {
+    const auto expectCount = [&](std::uint32_t actual, std::uint32_t wanted, double tolerance,
+                                 const std::string& what) {
       if (measuredDriver) {
         EXPECT_EQ(actual, wanted) << expected.scene << ": " << what;
       } else {
-        EXPECT_NEAR(actual, wanted, tolerance * wanted) << expected.scene << ": " << what << " on " << rig.context->info().renderer;
+        EXPECT_NEAR(actual, wanted, tolerance * wanted)
+            << expected.scene << ": " << what << " on " << rig.context->info().renderer;
       }
     };
     renderFrame(rig, {}, 640, 480);
@@ -221,9 +231,11 @@ TEST(Tessellation, ClassifyingThenSearchingSplitsWhatTheSingleKernelDid) {
     expectCount(statistics.midpointSearches.searched, expected.midpointSearches, 0.02, "midpoint searches");
     ASSERT_EQ(statistics.trianglesPerRound.size(), expected.trianglesPerRound.size()) << expected.scene;
     for (std::size_t round = 0; round < expected.trianglesPerRound.size(); ++round)
-      expectCount(statistics.trianglesPerRound[round], expected.trianglesPerRound[round], 0.10, "round " + std::to_string(round));
+      expectCount(statistics.trianglesPerRound[round], expected.trianglesPerRound[round], 0.10,
+                  "round " + std::to_string(round));
     const render::RenderedFrame again = renderFrame(rig, {}, 640, 480);
-    EXPECT_EQ(again.tessellation.trianglesPerRound, statistics.trianglesPerRound) << expected.scene << ": the same frame splits the same";
+    EXPECT_EQ(again.tessellation.trianglesPerRound, statistics.trianglesPerRound)
+        << expected.scene << ": the same frame splits the same";
   }
 }
 
@@ -240,10 +252,12 @@ TEST(Tessellation, AFrameCappedPartWayStillDrawsEveryPart) {
   ASSERT_TRUE(truth);
   std::map<int, double> mismatch;
   for (int level : {2, 3}) {
-    const auto frame = renderFrame(rig, tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, 0.0f, level), kWidth, kHeight);
+    const auto frame = renderFrame(
+        rig, tessellation(TessellationMode::CrackFree, TessellationMetric::Pixels, 0.0f, level), kWidth, kHeight);
     EXPECT_EQ(frame.tessellation.capped, level == 3) << "level " << level;
     mismatch[level] = specula::testing::mismatchAgainst(*truth, frame).share;
   }
-  std::printf("kitchen, full tessellation: mismatch %.4f at level 2, %.4f at level 3 (capped)\n", mismatch[2], mismatch[3]);
+  std::printf("kitchen, full tessellation: mismatch %.4f at level 2, %.4f at level 3 (capped)\n", mismatch[2],
+              mismatch[3]);
   EXPECT_LE(mismatch[3], mismatch[2] + 0.002);
 }

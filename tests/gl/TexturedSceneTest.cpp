@@ -22,8 +22,10 @@ double wholeFrameMismatch(const std::shared_ptr<const scene::Scene>& scene, cons
   EXPECT_TRUE(tracer) << tracer.error();
   auto truth = (*tracer)->render(pose, specula::testing::tracedLike(frame));
   EXPECT_TRUE(truth) << truth.error();
-  const std::vector<std::uint8_t> everywhere(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1);
-  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height}, {truth->rgba, frame.width, frame.height}, everywhere);
+  const std::vector<std::uint8_t> everywhere(
+      static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 1);
+  auto mismatch = reference::maskedMismatch({frame.rgba, frame.width, frame.height},
+                                            {truth->rgba, frame.width, frame.height}, everywhere);
   EXPECT_TRUE(mismatch) << mismatch.error();
   return mismatch ? mismatch->share() : 1.0;
 }
@@ -82,7 +84,8 @@ TEST(TexturedScene, TheTextureShows) {
   EXPECT_GT(wholeFrameMismatch(textured, pose, *frame), 0.3) << "most of the frame is textured floor";
 }
 
-// Two textured glTF groups and a chrome one placed by a scene file (one scaled and turned), as the ray tracer sees them.
+// Two textured glTF groups and a chrome one placed by a scene file (one scaled and turned), as the ray tracer sees
+// them.
 TEST(TexturedScene, IncludedGltfGroupsMatchTheRayTracer) {
   auto loaded = scene::loadSceneFile(kData / "gltf" / "includes.json");
   ASSERT_TRUE(loaded) << loaded.error();

@@ -24,7 +24,7 @@ constexpr int kSessions = 12;
 
 struct Viewer {
   std::unique_ptr<client::ResumingClient> client;
-  std::string instance;       // Welcome.instance: "host:pid" of the process serving it now
+  std::string instance;  // Welcome.instance: "host:pid" of the process serving it now
   glm::vec3 eye{0.0f};
   double sceneMs = 0.0;
   // What the client said about its connection; shared with its notice callback, which outlives moves of the viewer.
@@ -41,16 +41,19 @@ v1::Hello hello() {
 }
 
 // Reads until a message satisfies `accept`, noting welcomes and errors; false on timeout or loss.
-bool readUntil(Viewer& viewer, const std::function<bool(const v1::ServerMessage&)>& accept, std::chrono::milliseconds timeout = 30s) {
+bool readUntil(Viewer& viewer, const std::function<bool(const v1::ServerMessage&)>& accept,
+               std::chrono::milliseconds timeout = 30s) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (std::chrono::steady_clock::now() < deadline) {
-    auto message = viewer.client->receive(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
+    auto message = viewer.client->receive(
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
     if (!message) {
       if (viewer.client->closeInfo()) return false;
       continue;
     }
     if (message->has_welcome()) viewer.instance = message->welcome().instance();
-    if (message->has_error()) viewer.errors.push_back(v1::Error::Code_Name(message->error().code()) + ": " + message->error().message());
+    if (message->has_error())
+      viewer.errors.push_back(v1::Error::Code_Name(message->error().code()) + ": " + message->error().message());
     if (accept(*message)) return true;
   }
   return false;
@@ -86,8 +89,9 @@ class ScaleOut : public ::testing::Test {
   // A viewer through the front, greeted, paused at its own time and camera, with its own settings.
   Viewer connectViewer(int i) {
     Viewer viewer;
-    auto client = client::ResumingClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, protocol::Encoding::Proto, hello(),
-                                                  {12, 100ms, 1000ms, 3000ms}, [notices = viewer.notices](const std::string& notice) { notices->push_back(notice); });
+    auto client = client::ResumingClient::connect(
+        {"127.0.0.1", cluster_->frontPort(), ""}, protocol::Encoding::Proto, hello(), {12, 100ms, 1000ms, 3000ms},
+        [notices = viewer.notices](const std::string& notice) { notices->push_back(notice); });
     EXPECT_TRUE(client) << client.error();
     if (!client) return viewer;
     viewer.client = std::move(*client);
@@ -102,7 +106,8 @@ class ScaleOut : public ::testing::Test {
     camera.mutable_camera()->set_sequence(1);
     settings.mutable_settings()->set_still_samples(i % 2 == 0 ? 2 : 8);
     settings.mutable_settings()->set_jpeg_quality(static_cast<std::uint32_t>(50 + i));
-    for (const v1::ClientMessage* message : {&pause, &seek, &camera, &settings}) EXPECT_TRUE(viewer.client->send(*message).ok());
+    for (const v1::ClientMessage* message : {&pause, &seek, &camera, &settings})
+      EXPECT_TRUE(viewer.client->send(*message).ok());
     // The still frame after the settings carries a token with all of it.
     EXPECT_TRUE(readUntil(viewer, [](const v1::ServerMessage& m) {
       return m.has_frame() && m.frame().still() && m.frame().input_sequence() >= 1 && !m.frame().resume_token().empty();
@@ -134,7 +139,8 @@ TEST_F(ScaleOut, SessionsSpreadEvenlyAndSurviveLosingTheirInstance) {
     const std::optional<int> sessions = cluster_->sessions(i);
     ASSERT_TRUE(sessions) << "instance " << i << " answers its /metrics";
     EXPECT_NEAR(*sessions, kSessions / kInstances, 1) << "instance " << i;
-    EXPECT_EQ(perInstance[std::to_string(cluster_->instancePid(i))], *sessions) << "Welcome.instance names the serving process";
+    EXPECT_EQ(perInstance[std::to_string(cluster_->instancePid(i))], *sessions)
+        << "Welcome.instance names the serving process";
   }
 
   // Instance 0 dies with its sessions open; HAProxy cuts their tunnels, they reconnect and resume.
@@ -144,7 +150,8 @@ TEST_F(ScaleOut, SessionsSpreadEvenlyAndSurviveLosingTheirInstance) {
     Viewer& viewer = viewers[static_cast<std::size_t>(i)];
     if (pidOf(viewer.instance) != dead) continue;
     const std::optional<v1::Welcome> welcome = welcomeAfterReconnect(viewer);
-    ASSERT_TRUE(welcome) << "viewer " << i << " came back; notices: " << (viewer.notices->empty() ? "" : viewer.notices->back());
+    ASSERT_TRUE(welcome) << "viewer " << i
+                         << " came back; notices: " << (viewer.notices->empty() ? "" : viewer.notices->back());
     expectResumedIntact(viewer, *welcome, i);
     EXPECT_NE(pidOf(viewer.instance), dead);
     EXPECT_TRUE(readUntil(viewer, [](const v1::ServerMessage& m) { return m.has_frame(); })) << "and streams again";
@@ -154,13 +161,17 @@ TEST_F(ScaleOut, SessionsSpreadEvenlyAndSurviveLosingTheirInstance) {
   for (int i = 0; i < kSessions; ++i) {
     Viewer& viewer = viewers[static_cast<std::size_t>(i)];
     v1::ClientMessage camera;
-    *camera.mutable_camera() = protocol::cameraUpdate(viewer.eye + glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), 40.0f);
+    *camera.mutable_camera() = protocol::cameraUpdate(viewer.eye + glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0.0f),
+                                                      glm::vec3(0.0f, 1.0f, 0.0f), 40.0f);
     camera.mutable_camera()->set_sequence(2);
     ASSERT_TRUE(viewer.client->send(camera).ok());
-    EXPECT_TRUE(readUntil(viewer, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 2; })) << i;
+    EXPECT_TRUE(readUntil(viewer, [](const v1::ServerMessage& m) {
+      return m.has_frame() && m.frame().input_sequence() == 2;
+    })) << i;
     EXPECT_TRUE(viewer.errors.empty()) << i << ": " << (viewer.errors.empty() ? "" : viewer.errors.front());
   }
-  EXPECT_EQ(cluster_->sessions(1).value_or(0) + cluster_->sessions(2).value_or(0), kSessions) << "all twelve on the two left";
+  EXPECT_EQ(cluster_->sessions(1).value_or(0) + cluster_->sessions(2).value_or(0), kSessions)
+      << "all twelve on the two left";
 
   // Instance 1 drains: at once it stops taking sessions (a new one goes to instance 2), and after
   // --drain-seconds it closes its own with 1001; they resume on instance 2 and it exits 0.
@@ -174,7 +185,8 @@ TEST_F(ScaleOut, SessionsSpreadEvenlyAndSurviveLosingTheirInstance) {
   EXPECT_EQ(ready->first, 503);
   EXPECT_EQ(ready->second, "draining\n");
   Viewer late = connectViewer(kSessions);
-  EXPECT_EQ(pidOf(late.instance), std::to_string(cluster_->instancePid(2))) << "a new session goes to the instance still up";
+  EXPECT_EQ(pidOf(late.instance), std::to_string(cluster_->instancePid(2)))
+      << "a new session goes to the instance still up";
   for (int i = 0; i < kSessions; ++i) {
     Viewer& viewer = viewers[static_cast<std::size_t>(i)];
     if (pidOf(viewer.instance) != draining) continue;
@@ -198,8 +210,10 @@ TEST_F(ScaleOut, ForgedTokensGetAFreshSessionAndAReason) {
   ASSERT_TRUE(token.starts_with("s1."));
   std::string altered = token;
   altered[5] = altered[5] == 'A' ? 'B' : 'A';
-  for (const std::string& forged : {altered, std::string("s1.") + base64UrlEncode("not a state") + "." + base64UrlEncode(std::string(32, 'x'))}) {
-    auto client = client::SpeculaClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, protocol::Encoding::Json, 5s);
+  for (const std::string& forged :
+       {altered, std::string("s1.") + base64UrlEncode("not a state") + "." + base64UrlEncode(std::string(32, 'x'))}) {
+    auto client =
+        client::SpeculaClient::connect({"127.0.0.1", cluster_->frontPort(), ""}, protocol::Encoding::Json, 5s);
     ASSERT_TRUE(client) << client.error();
     v1::ClientMessage message;
     *message.mutable_hello() = hello();
@@ -210,8 +224,9 @@ TEST_F(ScaleOut, ForgedTokensGetAFreshSessionAndAReason) {
       auto reply = (*client)->receive(10s);
       ASSERT_TRUE(reply) << reply.error();
       if (reply->has_welcome()) fresh = !reply->welcome().resumed();
-      if (reply->has_error()) refused = reply->error().code() == v1::Error::RESUME_REFUSED &&
-                                        reply->error().message().find("signature does not match") != std::string::npos;
+      if (reply->has_error())
+        refused = reply->error().code() == v1::Error::RESUME_REFUSED &&
+                  reply->error().message().find("signature does not match") != std::string::npos;
     }
     EXPECT_TRUE(fresh && refused);
   }

@@ -34,9 +34,9 @@ double greyDeviation(const v1::Frame& frame) {
   tjhandle handle = tjInitDecompress();
   const int width = static_cast<int>(frame.width()), height = static_cast<int>(frame.height());
   std::vector<unsigned char> grey(static_cast<std::size_t>(width * height));
-  const int failed = tjDecompress2(handle, reinterpret_cast<const unsigned char*>(frame.jpeg().data()),
-                                   static_cast<unsigned long>(frame.jpeg().size()), grey.data(), width, 0, height,
-                                   TJPF_GRAY, 0);
+  const int failed =
+      tjDecompress2(handle, reinterpret_cast<const unsigned char*>(frame.jpeg().data()),
+                    static_cast<unsigned long>(frame.jpeg().size()), grey.data(), width, 0, height, TJPF_GRAY, 0);
   tjDestroy(handle);
   if (failed) return -1.0;
   double sum = 0.0, squares = 0.0;
@@ -50,8 +50,8 @@ double greyDeviation(const v1::Frame& frame) {
 
 // A client of the server on `port` that has said hello with a `width` × `height` viewport; null (and a
 // failed expectation) when it could not.
-std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, protocol::Encoding encoding, std::uint32_t width,
-                                                     std::uint32_t height) {
+std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, protocol::Encoding encoding,
+                                                     std::uint32_t width, std::uint32_t height) {
   auto client = client::SpeculaClient::connect({"127.0.0.1", port, ""}, encoding, 5s);
   EXPECT_TRUE(client) << client.error();
   if (!client) return nullptr;
@@ -105,13 +105,14 @@ TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWith
 
 // Every search option `serve --help` lists as a sessions' default reaches a new session.
 TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
-  auto server = serve({"--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine",
-                  "on", "--explosion-map-size", "128", "--virtual-pixels", "as-placed", "--extrusions", "search",
-                  "--still-samples", "16", "--interactive-samples", "2"});
+  auto server = serve({"--port", "0", "--scene", "quad", "--search", "explosion-map", "--explosion-refine", "on",
+                       "--explosion-map-size", "128", "--virtual-pixels", "as-placed", "--extrusions", "search",
+                       "--still-samples", "16", "--interactive-samples", "2"});
   ASSERT_TRUE(server);
   const auto listening = server->waitFor(kListening, 120s);
   ASSERT_TRUE(listening) << server->output();
-  auto client = greetedClient(static_cast<std::uint16_t>(std::stoi((*listening)[1])), protocol::Encoding::Proto, 64, 48);
+  auto client =
+      greetedClient(static_cast<std::uint16_t>(std::stoi((*listening)[1])), protocol::Encoding::Proto, 64, 48);
   ASSERT_TRUE(client);
   std::optional<v1::Welcome> welcome;
   for (int i = 0; i < 10 && !welcome; ++i) {
@@ -133,14 +134,17 @@ TEST(ServeProcess, RefusesASampleCountWithoutAPattern) {
   auto server = serve({"--port", "0", "--still-samples", "6"});
   ASSERT_TRUE(server);
   EXPECT_EQ(server->waitExit(30s), std::optional<int>(1));
-  EXPECT_NE(server->output().find("--still-samples: samples per pixel must be 1, 2, 4, 8 or 16, got 6"), std::string::npos) << server->output();
+  EXPECT_NE(server->output().find("--still-samples: samples per pixel must be 1, 2, 4, 8 or 16, got 6"),
+            std::string::npos)
+      << server->output();
 }
 
 TEST(ServeProcess, RefusesAMissingOrShortResumeSecretBeforeStarting) {
   auto missing = serve({"--port", "0", "--resume-secret-file", "/nonexistent/resume.secret"});
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->waitExit(30s), std::optional<int>(1));
-  EXPECT_NE(missing->output().find("--resume-secret-file: /nonexistent/resume.secret"), std::string::npos) << missing->output();
+  EXPECT_NE(missing->output().find("--resume-secret-file: /nonexistent/resume.secret"), std::string::npos)
+      << missing->output();
   const std::string shortSecret = ::testing::TempDir() + "short.secret";
   std::ofstream(shortSecret) << "too short\n";
   auto weak = serve({"--port", "0", "--resume-secret-file", shortSecret});

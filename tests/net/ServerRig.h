@@ -158,8 +158,8 @@ inline std::optional<v1::ServerMessage> receiveUntil(client::SpeculaClient& clie
                                                      std::chrono::milliseconds timeout = 3s) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (std::chrono::steady_clock::now() < deadline) {
-    auto message = client.receive(std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now()));
+    auto message = client.receive(
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
     if (!message) break;
     if (accept(*message)) return *message;
   }
@@ -181,7 +181,8 @@ inline v1::Welcome greet(client::SpeculaClient& client, std::uint32_t width = 64
 inline int closeCodeAfter(client::SpeculaClient& client, std::chrono::milliseconds timeout = 3s) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!client.closeInfo() && std::chrono::steady_clock::now() < deadline)
-    (void)client.receive(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
+    (void)client.receive(
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
   return client.closeInfo() ? client.closeInfo()->code : -1;
 }
 

@@ -12,7 +12,8 @@ TEST(SettingsProtocol, ANamedSearchRunsInsteadOfTheCostModelsRayCast) {
   v1::RenderSettings update;
   update.set_jpeg_quality(70);
   ASSERT_TRUE(applySettingsUpdate(update, settings));
-  EXPECT_EQ(settings.reflection.rayCast, passes::RayCastRule::WhenCheaper) << "an update that names no search leaves it";
+  EXPECT_EQ(settings.reflection.rayCast, passes::RayCastRule::WhenCheaper)
+      << "an update that names no search leaves it";
   update.set_search(v1::SEARCH_HIERARCHY);
   ASSERT_TRUE(applySettingsUpdate(update, settings));
   EXPECT_EQ(settings.reflection.search, passes::SearchStrategy::Hierarchy);
@@ -43,7 +44,8 @@ TEST(SettingsProtocol, TheTessellationLevelIsBoundedByTheOneLimit) {
   update.set_level(passes::kMaxTessellationLevel + 1);
   const Status refused = applySettingsUpdate(update, settings);
   ASSERT_FALSE(refused);
-  EXPECT_NE(refused.error().find("[0, " + std::to_string(passes::kMaxTessellationLevel) + "]"), std::string::npos) << refused.error();
+  EXPECT_NE(refused.error().find("[0, " + std::to_string(passes::kMaxTessellationLevel) + "]"), std::string::npos)
+      << refused.error();
 }
 
 }  // namespace

@@ -70,7 +70,8 @@ TEST(SignedResume, CarriesTheWholeStateThroughAToken) {
   EXPECT_FLOAT_EQ(opened->clock.speed(), 2.0f);
   ASSERT_EQ(opened->overrides.size(), 1u);
   EXPECT_EQ(opened->overrides.at(1), state.overrides.at(1));
-  EXPECT_EQ(session::settingsToProto(opened->settings).SerializeAsString(), session::settingsToProto(state.settings).SerializeAsString());
+  EXPECT_EQ(session::settingsToProto(opened->settings).SerializeAsString(),
+            session::settingsToProto(state.settings).SerializeAsString());
 }
 
 TEST(SignedResume, RefusesAlteredForeignExpiredAndMalformedTokensByName) {
@@ -89,12 +90,15 @@ TEST(SignedResume, RefusesAlteredForeignExpiredAndMalformedTokensByName) {
   EXPECT_NE(refusal(altered).find("its signature does not match"), std::string::npos) << refusal(altered);
   auto otherSecret = session::SignedResume::create(std::string(40, 'z'), std::chrono::seconds(60), *scene);
   EXPECT_NE(refusal(otherSecret->issue(aViewedState(now), now, wall)).find("another secret"), std::string::npos);
-  auto otherScene = session::SignedResume::create(kSecret, std::chrono::seconds(60), *scene::makeBuiltinScene("kitchen"));
-  EXPECT_NE(refusal(otherScene->issue(aViewedState(now), now, wall)).find("issued for another scene"), std::string::npos);
+  auto otherScene =
+      session::SignedResume::create(kSecret, std::chrono::seconds(60), *scene::makeBuiltinScene("kitchen"));
+  EXPECT_NE(refusal(otherScene->issue(aViewedState(now), now, wall)).find("issued for another scene"),
+            std::string::npos);
   EXPECT_NE(refusal(token, {std::chrono::seconds(61)}).find("it expired"), std::string::npos);
   EXPECT_EQ(refusal(token, {std::chrono::seconds(59)}), "opened");
-  for (const std::string& garbage : {std::string(), std::string("s1."), std::string("s1.."), std::string("s1.abc.def"), std::string("x") + token,
-                                     std::string(session::SignedResume::kMaxTokenBytes + 1, 'a'), token.substr(0, token.size() - 1)})
+  for (const std::string& garbage :
+       {std::string(), std::string("s1."), std::string("s1.."), std::string("s1.abc.def"), std::string("x") + token,
+        std::string(session::SignedResume::kMaxTokenBytes + 1, 'a'), token.substr(0, token.size() - 1)})
     EXPECT_NE(refusal(garbage), "opened") << garbage.substr(0, 40);
   EXPECT_TRUE(session::SignedResume::secretProblem("short").has_value());
   EXPECT_FALSE(session::SignedResume::create("short", std::chrono::seconds(60), *scene));
@@ -135,7 +139,8 @@ TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFra
   settings.mutable_settings()->set_search(v1::SEARCH_HIERARCHY);
   settings.mutable_settings()->set_still_samples(2);
   ASSERT_TRUE(client->send(settings).ok());
-  auto frame = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 7; });
+  auto frame = receiveUntil(
+      *client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 7; });
   ASSERT_TRUE(frame);
   const std::string token = frame->frame().resume_token();
   ASSERT_FALSE(token.empty()) << "with a secret every frame carries the state's token";
@@ -151,7 +156,9 @@ TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFra
   EXPECT_DOUBLE_EQ(welcome.scene_time_ms(), 2500.0);
   EXPECT_EQ(welcome.settings().search(), v1::SEARCH_HIERARCHY);
   EXPECT_EQ(welcome.settings().still_samples(), 2u);
-  EXPECT_FALSE(receiveUntil(*moved, [](const v1::ServerMessage& m) { return m.has_error(); }, 300ms)) << "no error for a good token";
+  EXPECT_FALSE(receiveUntil(
+      *moved, [](const v1::ServerMessage& m) { return m.has_error(); }, 300ms))
+      << "no error for a good token";
   // Stateless: the same token resumes again (until it expires), on any instance with the secret.
   auto again = second.connect(protocol::Encoding::Proto);
   EXPECT_TRUE(greet(*again, 64, 48, token).resumed());

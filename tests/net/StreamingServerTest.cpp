@@ -10,7 +10,8 @@ namespace specula::testing {
 namespace {
 
 bool antiAliased(const v1::Frame& frame) {
-  return std::any_of(frame.stages().begin(), frame.stages().end(), [](const v1::StageTime& stage) { return stage.name() == "anti-aliasing"; });
+  return std::any_of(frame.stages().begin(), frame.stages().end(),
+                     [](const v1::StageTime& stage) { return stage.name() == "anti-aliasing"; });
 }
 
 using protocol::Encoding;
@@ -21,8 +22,8 @@ double meanGrey(const v1::Frame& frame) {
   int width = 0, height = 0, subsampling = 0, colourspace = 0;
   const auto* bytes = reinterpret_cast<const unsigned char*>(frame.jpeg().data());
   double mean = -1.0;
-  if (tjDecompressHeader3(handle, bytes, static_cast<unsigned long>(frame.jpeg().size()), &width, &height,
-                          &subsampling, &colourspace) == 0 &&
+  if (tjDecompressHeader3(handle, bytes, static_cast<unsigned long>(frame.jpeg().size()), &width, &height, &subsampling,
+                          &colourspace) == 0 &&
       width == static_cast<int>(frame.width()) && height == static_cast<int>(frame.height())) {
     std::vector<unsigned char> grey(static_cast<std::size_t>(width * height));
     if (tjDecompress2(handle, bytes, static_cast<unsigned long>(frame.jpeg().size()), grey.data(), width, 0, height,
@@ -75,9 +76,8 @@ TEST_P(StreamingServer, CameraUpdateIsAnsweredByAFrameCarryingItsSequence) {
   for (std::uint64_t sequence : {7u, 8u, 30u}) {
     const glm::vec3 eye(static_cast<float>(sequence) / 10.0f, 1.0f, 6.0f);
     ASSERT_TRUE(client->send(cameraMessage(eye, sequence)).ok());
-    auto frame = receiveUntil(*client, [&](const v1::ServerMessage& m) {
-      return m.has_frame() && m.frame().input_sequence() == sequence;
-    });
+    auto frame = receiveUntil(
+        *client, [&](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == sequence; });
     ASSERT_TRUE(frame) << "no frame for sequence " << sequence;
     EXPECT_NEAR(meanGrey(frame->frame()), FakeRenderer::eyeColour(eye), 3.0) << "the frame shows that camera";
     EXPECT_GT(frame->frame().client_time_ms(), 0.0) << "the client's timestamp is echoed";
@@ -98,7 +98,8 @@ MovedOnce moveOnceAndSettle(ServerRig& rig, client::SpeculaClient& client) {
   EXPECT_TRUE(client.send(animationMessage(v1::AnimationControl::PAUSE)).ok());
   receiveUntil(client, isFrame);
   EXPECT_TRUE(client.send(cameraMessage({1, 1, 6}, 1)).ok());
-  moved.interactive = receiveUntil(client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
+  moved.interactive =
+      receiveUntil(client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 1; });
   moved.rendersBeforeStill = rig.renders.load();
   moved.still = receiveUntil(client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
   EXPECT_FALSE(receiveUntil(client, isFrame, 400ms)) << "a still scene sends nothing more";
@@ -118,7 +119,8 @@ TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneAntiAliasedStill) {
   ASSERT_TRUE(moved.still) << "a still frame follows once input stops";
   EXPECT_FALSE(moved.still->frame().reencoded()) << "more samples than the interactive frame had: a new render";
   EXPECT_TRUE(antiAliased(moved.still->frame()));
-  EXPECT_EQ(rig.renders.load(), moved.rendersBeforeStill + 1) << "one render for the still; a paused, unchanged view is not rendered again";
+  EXPECT_EQ(rig.renders.load(), moved.rendersBeforeStill + 1)
+      << "one render for the still; a paused, unchanged view is not rendered again";
 }
 
 // With as many samples for stills as for interactive frames, the still is the last render re-encoded.
@@ -139,7 +141,8 @@ TEST_P(StreamingServer, InputGetsInteractiveFramesThenOneFullQualityStill) {
   EXPECT_TRUE(moved.still->frame().reencoded());
   EXPECT_EQ(rig.renders.load(), moved.rendersBeforeStill) << "no render for the still, and none after it";
   EXPECT_EQ(moved.still->frame().stages_size(), 0) << "no pass ran for it";
-  EXPECT_NEAR(meanGrey(moved.still->frame()), FakeRenderer::eyeColour({1, 1, 6}), 3.0) << "it shows the interactive frame's view";
+  EXPECT_NEAR(meanGrey(moved.still->frame()), FakeRenderer::eyeColour({1, 1, 6}), 3.0)
+      << "it shows the interactive frame's view";
 }
 
 TEST_P(StreamingServer, AnimationPlaysPausesAndSeeks) {
@@ -149,9 +152,8 @@ TEST_P(StreamingServer, AnimationPlaysPausesAndSeeks) {
   greet(*client);
   ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
   ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::SEEK, 5000.0)).ok());
-  auto seeked = receiveUntil(*client, [](const v1::ServerMessage& m) {
-    return m.has_frame() && m.frame().scene_time_ms() == 5000.0;
-  });
+  auto seeked = receiveUntil(
+      *client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().scene_time_ms() == 5000.0; });
   ASSERT_TRUE(seeked) << "a frame at the sought time";
   receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); });
   EXPECT_FALSE(receiveUntil(*client, isFrame, 400ms)) << "paused and still: no frames";
@@ -167,7 +169,8 @@ TEST_P(StreamingServer, AnimationPlaysPausesAndSeeks) {
   EXPECT_GE(times.front(), 5000.0);
 
   ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
-  receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); }, 2s);
+  receiveUntil(
+      *client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still(); }, 2s);
   EXPECT_FALSE(receiveUntil(*client, isFrame, 400ms)) << "paused again: frames stop";
 }
 
@@ -251,7 +254,8 @@ void PrintTo(const BadMessage& bad, std::ostream* out) { *out << bad.name; }
 // Pauses the animation and waits for the still frame, so the renderer goes quiet.
 void settle(client::SpeculaClient& client) {
   ASSERT_TRUE(client.send(animationMessage(v1::AnimationControl::PAUSE)).ok());
-  ASSERT_TRUE(receiveUntil(client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still() && m.frame().number() > 1; }));
+  ASSERT_TRUE(receiveUntil(
+      client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().still() && m.frame().number() > 1; }));
 }
 
 TEST_P(BadMessages, CloseTheConnectionWithTheRightCodeWhileOthersKeepBeingServed) {
@@ -271,23 +275,26 @@ TEST_P(BadMessages, CloseTheConnectionWithTheRightCodeWhileOthersKeepBeingServed
   std::this_thread::sleep_for(200ms);
   EXPECT_EQ(rig.renders.load(), rendersBefore) << "the bad message never reached the renderer";
   ASSERT_TRUE(bystander->send(cameraMessage({0.5f, 1, 6}, 99)).ok());
-  EXPECT_TRUE(receiveUntil(*bystander, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 99; }))
-      << "the other session is still served";
+  EXPECT_TRUE(receiveUntil(*bystander, [](const v1::ServerMessage& m) {
+    return m.has_frame() && m.frame().input_sequence() == 99;
+  })) << "the other session is still served";
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Hostile, BadMessages,
-    ::testing::Values(BadMessage{"garbage_proto", Encoding::Proto, std::string("\xff\xff\xff\xff\x0f garbage", 13), false, 1007},
-                      BadMessage{"truncated_proto", Encoding::Proto, truncatedHello(), false, 1007},
-                      BadMessage{"text_on_proto", Encoding::Proto, "{\"statsRequest\":{}}", true, 1007},
-                      BadMessage{"binary_on_json", Encoding::Json, std::string("\x32\x00", 2), false, 1007},
-                      BadMessage{"garbage_json", Encoding::Json, "{\"camera\": [1,2", true, 1007},
-                      BadMessage{"unknown_json_field", Encoding::Json, "{\"teleport\":{}}", true, 1007},
-                      BadMessage{"wrong_json_type", Encoding::Json, "{\"camera\":{\"eye\":\"north\"}}", true, 1007},
-                      BadMessage{"empty_json_object", Encoding::Json, "{}", true, 1007},
-                      BadMessage{"second_hello", Encoding::Json, "{\"hello\":{\"protocolVersion\":1,\"width\":8,\"height\":8}}", true, 1008},
-                      BadMessage{"oversized_proto", Encoding::Proto, std::string(70 * 1024, '\x0a'), false, 1009},
-                      BadMessage{"oversized_json", Encoding::Json, "\"" + std::string(70 * 1024, 'a') + "\"", true, 1009}),
+    ::testing::Values(
+        BadMessage{"garbage_proto", Encoding::Proto, std::string("\xff\xff\xff\xff\x0f garbage", 13), false, 1007},
+        BadMessage{"truncated_proto", Encoding::Proto, truncatedHello(), false, 1007},
+        BadMessage{"text_on_proto", Encoding::Proto, "{\"statsRequest\":{}}", true, 1007},
+        BadMessage{"binary_on_json", Encoding::Json, std::string("\x32\x00", 2), false, 1007},
+        BadMessage{"garbage_json", Encoding::Json, "{\"camera\": [1,2", true, 1007},
+        BadMessage{"unknown_json_field", Encoding::Json, "{\"teleport\":{}}", true, 1007},
+        BadMessage{"wrong_json_type", Encoding::Json, "{\"camera\":{\"eye\":\"north\"}}", true, 1007},
+        BadMessage{"empty_json_object", Encoding::Json, "{}", true, 1007},
+        BadMessage{"second_hello", Encoding::Json, "{\"hello\":{\"protocolVersion\":1,\"width\":8,\"height\":8}}", true,
+                   1008},
+        BadMessage{"oversized_proto", Encoding::Proto, std::string(70 * 1024, '\x0a'), false, 1009},
+        BadMessage{"oversized_json", Encoding::Json, "\"" + std::string(70 * 1024, 'a') + "\"", true, 1009}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(StreamingServerInput, AnythingBeforeHelloClosesWithPolicyViolation) {
@@ -333,7 +340,8 @@ TEST(StreamingServerInput, OutOfRangeValuesAreRefusedWithAnErrorAndTheSessionGoe
     EXPECT_TRUE(error->error().code() == v1::Error::BAD_VALUE) << message << " → " << error->error().message();
   }
   ASSERT_TRUE(client->send(cameraMessage({1, 1, 6}, 50)).ok());
-  EXPECT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 50; }));
+  EXPECT_TRUE(receiveUntil(
+      *client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 50; }));
 }
 
 TEST(StreamingServerInput, ObjectOverridesReplaceTheAnimatedTransform) {
@@ -348,7 +356,8 @@ TEST(StreamingServerInput, ObjectOverridesReplaceTheAnimatedTransform) {
   item.mutable_translation()->set_y(2.0f);
   message.mutable_animation()->set_sequence(3);
   ASSERT_TRUE(client->send(message).ok());
-  EXPECT_TRUE(receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 3; }));
+  EXPECT_TRUE(receiveUntil(
+      *client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 3; }));
 }
 
 // ---- limits and failure ----
@@ -377,7 +386,7 @@ TEST(StreamingServerLimits, BeyondMaxSessionsAClientIsRefusedClearly) {
 
 TEST(StreamingServerLimits, AClientThatStopsReadingIsDroppedWithItsSkippedFramesCounted) {
   RigOptions options = defaultRigOptions();
-  options.renderer.noise = true;  // incompressible frames fill the socket buffers quickly
+  options.renderer.noise = true;         // incompressible frames fill the socket buffers quickly
   options.server.writeTimeout = 1500ms;  // long enough for newer frames to replace a waiting one first
   ServerRig rig(options);
   auto reader = rig.connect();
@@ -612,7 +621,8 @@ TEST(LoadRun, ReportsAnUnreachableServerAsSessionErrors) {
   load.duration = 200ms;
   const client::LoadReport report = client::runLoad(load);
   EXPECT_EQ(report.errors, 2u);
-  EXPECT_NE(report.sessions[0].error.find("cannot connect to 127.0.0.1:1"), std::string::npos) << report.sessions[0].error;
+  EXPECT_NE(report.sessions[0].error.find("cannot connect to 127.0.0.1:1"), std::string::npos)
+      << report.sessions[0].error;
 }
 
 }  // namespace

@@ -82,9 +82,11 @@ TEST(BenchReport, StillFramesShowWhatAntiAliasingCosts) {
   EXPECT_NE(csv[0].find(",image_samples,raytrace_still_ms,raytrace_ms,"), std::string::npos) << csv[0];
   EXPECT_NE(csv[1].find(",4,170.0,44.0,"), std::string::npos) << csv[1];
   const std::string table = bench::formatTable(results);
-  EXPECT_NE(table.find("still frames (last pose, samples a pixel: ms): 1: 21.0; 4: 80.5; 8: 161.0; images compared at 4 samples "
-                       "with a 4-ray trace (170 ms)\n"),
-            std::string::npos)
+  EXPECT_NE(
+      table.find(
+          "still frames (last pose, samples a pixel: ms): 1: 21.0; 4: 80.5; 8: 161.0; images compared at 4 samples "
+          "with a 4-ray trace (170 ms)\n"),
+      std::string::npos)
       << table;
 }
 
@@ -135,8 +137,8 @@ TEST(AccuracyReport, TheParetoFrontHoldsExactlyTheUndominatedSettings) {
                                           accuracy("fast coarse", 10.0, 0.2),
                                           accuracy("slow fine", 100.0, 0.01),
                                           accuracy("middle", 30.0, 0.05),
-                                          accuracy("dominated", 40.0, 0.06),     // middle is faster and finer
-                                          accuracy("tie in time", 30.0, 0.07),   // as fast as middle, coarser
+                                          accuracy("dominated", 40.0, 0.06),        // middle is faster and finer
+                                          accuracy("tie in time", 30.0, 0.07),      // as fast as middle, coarser
                                           accuracy("same as middle", 30.0, 0.05)};  // equal: neither dominates
   bench::markParetoFront(rows);
   EXPECT_FALSE(onFront(rows, "reference"));
@@ -174,7 +176,8 @@ TEST(AccuracyReport, CsvMarkdownAndPlotCarryEverySettingAndMarkTheFront) {
   EXPECT_NE(plot.find(R"(set title "a \"quoted\" title")"), std::string::npos) << plot;
   EXPECT_NE(plot.find(R"("search, no tessellation")"), std::string::npos);
   EXPECT_NE(plot.find("title 'Pareto front'"), std::string::npos);
-  EXPECT_NE(plot.find("set arrow 1 from 250.000, graph 0"), std::string::npos) << "the reference's time as a vertical line";
+  EXPECT_NE(plot.find("set arrow 1 from 250.000, graph 0"), std::string::npos)
+      << "the reference's time as a vertical line";
   EXPECT_NE(plot.find("set output \"out.png\""), std::string::npos);
   EXPECT_NE(plot.find("set output \"out.svg\""), std::string::npos);
   // The exact setting sits on the floor of the log axis instead of vanishing at 0.
@@ -185,11 +188,14 @@ TEST(AccuracyReport, CsvMarkdownAndPlotCarryEverySettingAndMarkTheFront) {
 
 TEST(AccuracyReport, CrowdedSettingsGetLabelsThatDoNotOverlap) {
   std::vector<bench::AccuracyRow> rows;
-  for (int i = 0; i < 12; ++i) rows.push_back(accuracy("same " + std::to_string(i), 100.0, 0.0218));  // identical points
-  for (int i = 0; i < 6; ++i) rows.push_back(accuracy("near " + std::to_string(i), 100.0 + i, 0.0218 * (1.0 + 0.01 * i)));
+  for (int i = 0; i < 12; ++i)
+    rows.push_back(accuracy("same " + std::to_string(i), 100.0, 0.0218));  // identical points
+  for (int i = 0; i < 6; ++i)
+    rows.push_back(accuracy("near " + std::to_string(i), 100.0 + i, 0.0218 * (1.0 + 0.01 * i)));
   bench::markParetoFront(rows);
   const std::string plot = bench::accuracyPlotScript(rows, "crowded", "a.png", "a.svg");
-  const std::string block = plot.substr(plot.find("$settings << EOD\n") + 17, plot.find("EOD\n$front") - plot.find("$settings << EOD\n") - 17);
+  const std::string block = plot.substr(plot.find("$settings << EOD\n") + 17,
+                                        plot.find("EOD\n$front") - plot.find("$settings << EOD\n") - 17);
   std::vector<double> heights;
   for (const std::string& line : lines(block)) {
     std::stringstream fields(line);
@@ -199,7 +205,8 @@ TEST(AccuracyReport, CrowdedSettingsGetLabelsThatDoNotOverlap) {
   }
   ASSERT_EQ(heights.size(), rows.size());
   std::sort(heights.begin(), heights.end());
-  for (std::size_t i = 1; i < heights.size(); ++i) EXPECT_GT(heights[i] - heights[i - 1], 0.02) << "labels " << i - 1 << " and " << i;
+  for (std::size_t i = 1; i < heights.size(); ++i)
+    EXPECT_GT(heights[i] - heights[i - 1], 0.02) << "labels " << i - 1 << " and " << i;
 }
 
 TEST(AccuracySweep, MeshMirrorsApproximatingAnExactShapeGetMeshResolutionRows) {
@@ -219,13 +226,14 @@ TEST(AccuracySweep, MeshMirrorsApproximatingAnExactShapeGetMeshResolutionRows) {
     EXPECT_EQ(std::count_if(sweep.begin(), sweep.end(),
                             [](const auto& s) {
                               return s.settings.search == passes::SearchStrategy::ExplosionMap &&
-                                     s.settings.virtualPixels == passes::VirtualPixels::AsPlaced && !s.settings.explosionRefine &&
-                                     !s.settings.explosionMirrorPlacement;
+                                     s.settings.virtualPixels == passes::VirtualPixels::AsPlaced &&
+                                     !s.settings.explosionRefine && !s.settings.explosionMirrorPlacement;
                             }),
               3)
         << "the paper's explosion map at three map sizes";
     EXPECT_EQ(std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.settings.explosionRefine; }), 1);
-    EXPECT_EQ(std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.settings.explosionMirrorPlacement; }), 1)
+    EXPECT_EQ(
+        std::count_if(sweep.begin(), sweep.end(), [](const auto& s) { return s.settings.explosionMirrorPlacement; }), 1)
         << "and once with the paper's placement";
   }
   // The re-meshed sphere lies on the exact shape, with its normals.
@@ -238,7 +246,8 @@ TEST(AccuracySweep, MeshMirrorsApproximatingAnExactShapeGetMeshResolutionRows) {
     EXPECT_NEAR(glm::length(v.position - mirror.mirror->analytic->center), mirror.mirror->analytic->radii.x, 1e-5f);
     EXPECT_NEAR(glm::dot(v.normal, glm::normalize(v.position)), 1.0f, 1e-5f);
   }
-  EXPECT_EQ(coarse.meshes[coarse.objects[1].mesh].name, mesh.meshes[mesh.objects[1].mesh].name) << "other objects keep their meshes";
+  EXPECT_EQ(coarse.meshes[coarse.objects[1].mesh].name, mesh.meshes[mesh.objects[1].mesh].name)
+      << "other objects keep their meshes";
 }
 
 TEST(BenchReport, PatchTessellationAtEachDistanceHasItsColumnsAndLine) {
@@ -246,13 +255,16 @@ TEST(BenchReport, PatchTessellationAtEachDistanceHasItsColumnsAndLine) {
   teapot.patchTessellation = {{1, 14137, 1.2, 6.5, 24.1}, {2, 4074, 0.9, 4.8, 23.4}, {4, 1520, 0.4, 2.7, 14.5}};
   const std::vector<bench::SceneBenchResult> results = {teapot, measured("plain")};
   const auto csv = lines(bench::formatCsv(results));
-  EXPECT_NE(csv[0].find(",patch_triangles_at_distance_x1,patch_area_p10_px_at_distance_x1,"), std::string::npos) << csv[0];
-  EXPECT_NE(csv[1].find(",14137,1.20,6.50,24.10,4074,0.90,4.80,23.40,1520,0.40,2.70,14.50,"), std::string::npos) << csv[1];
+  EXPECT_NE(csv[0].find(",patch_triangles_at_distance_x1,patch_area_p10_px_at_distance_x1,"), std::string::npos)
+      << csv[0];
+  EXPECT_NE(csv[1].find(",14137,1.20,6.50,24.10,4074,0.90,4.80,23.40,1520,0.40,2.70,14.50,"), std::string::npos)
+      << csv[1];
   EXPECT_NE(csv[2].find(",0" + std::string(13, ',') + "20.50,"), std::string::npos)
       << "no patches: twelve empty cells between the point errors and the reference " << csv[2];
   const std::string table = bench::formatTable(results);
-  EXPECT_NE(table.find("patch tessellation (last pose, camera distance ×): 1: 14137 triangles, pixel area 1.2/6.5/24.1;"),
-            std::string::npos)
+  EXPECT_NE(
+      table.find("patch tessellation (last pose, camera distance ×): 1: 14137 triangles, pixel area 1.2/6.5/24.1;"),
+      std::string::npos)
       << table;
   EXPECT_EQ(table.find("patch tessellation", table.find("plain")), std::string::npos) << "no line without patches";
 }

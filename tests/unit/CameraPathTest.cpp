@@ -22,7 +22,8 @@ TEST(CameraPath, InterpolatesLinearlyAndClampsOutsideTheKeys) {
 }
 
 TEST(CameraPath, ReadsCsvWithOptionalColumnsInAnyOrder) {
-  auto path = parseCameraPathCsv("target_x,target_y,target_z,time,eye_x,eye_y,eye_z,fov\n0,0,0,0,0,1,5,30\n0,0,0,1,2,1,5,50\n");
+  auto path =
+      parseCameraPathCsv("target_x,target_y,target_z,time,eye_x,eye_y,eye_z,fov\n0,0,0,0,0,1,5,30\n0,0,0,1,2,1,5,50\n");
   ASSERT_TRUE(path) << path.error();
   ASSERT_EQ(path->keys.size(), 2u);
   EXPECT_FLOAT_EQ(path->at(0.5).eye.x, 1.0f);
@@ -37,9 +38,11 @@ TEST(CameraPath, RejectsBadPathsNamingTheProblem) {
       {R"({"keys": [{"eye": [0,1,5], "target": [0,0,0]}]})", "numeric \"time\""},
       {R"({"keys": [{"time": 0, "eye": [0,1], "target": [0,0,0]}]})", "\"eye\" must be [x, y, z]"},
       {R"({"keys": [{"time": 0, "eye": [0,0,0], "target": [0,0,0]}]})", "eye and target coincide"},
-      {R"({"keys": [{"time": 1, "eye": [0,1,5], "target": [0,0,0]}, {"time": 1, "eye": [0,1,5], "target": [0,0,0]}]})", "increase strictly"},
+      {R"({"keys": [{"time": 1, "eye": [0,1,5], "target": [0,0,0]}, {"time": 1, "eye": [0,1,5], "target": [0,0,0]}]})",
+       "increase strictly"},
       {R"({"keys": [{"time": 0, "eye": [0,1,5], "target": [0,0,0], "fov": 180}]})", "fov must be in (0, 180)"},
-      {R"({"keys": [{"time": 0, "eye": [0,1,5], "target": [0,0,0], "scene_time": 1}, {"time": 1, "eye": [0,1,5], "target": [0,0,0]}]})", "on every key or on none"},
+      {R"({"keys": [{"time": 0, "eye": [0,1,5], "target": [0,0,0], "scene_time": 1}, {"time": 1, "eye": [0,1,5], "target": [0,0,0]}]})",
+       "on every key or on none"},
       {"[1, 2]", "an object with a \"keys\" array"},
   };
   for (const auto& [text, expected] : bad) {

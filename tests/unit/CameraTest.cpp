@@ -11,7 +11,8 @@ TEST(Camera, RejectsEyeOnTargetParallelUpAndBadFov) {
   EXPECT_TRUE(cameraProblem(Camera{{1, 2, 3}, {1, 2, 3}, {0, 1, 0}, 40}).has_value());
   EXPECT_TRUE(cameraProblem(Camera{{0, 5, 0}, {0, 0, 0}, {0, 1, 0}, 40}).has_value());
   EXPECT_TRUE(cameraProblem(Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 180}).has_value());
-  EXPECT_TRUE(cameraProblem(Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, std::numeric_limits<float>::quiet_NaN()}).has_value());
+  EXPECT_TRUE(
+      cameraProblem(Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, std::numeric_limits<float>::quiet_NaN()}).has_value());
 }
 
 TEST(Camera, ViewMatrixPutsTargetOnNegativeZAxis) {

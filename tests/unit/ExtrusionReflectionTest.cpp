@@ -39,7 +39,8 @@ void expectExactReflection(const Extrusion& e, const glm::dvec3& eye, const glm:
   const glm::dvec3 reflected = glm::reflect(glm::normalize(r.position - eye), n);
   const glm::dvec3 toVertex = vertex - r.position;
   EXPECT_GT(glm::dot(reflected, toVertex), 0.0);
-  EXPECT_LT(glm::length(glm::cross(reflected, toVertex)), 1e-6 * glm::length(toVertex)) << "the reflected ray misses the vertex";
+  EXPECT_LT(glm::length(glm::cross(reflected, toVertex)), 1e-6 * glm::length(toVertex))
+      << "the reflected ray misses the vertex";
 }
 
 // Alhazen's circle problem solved by the sphere solver (another bracket and parametrisation) in the
@@ -149,7 +150,8 @@ TEST(ExtrusionReflection, TransformedExtrusionIsTheMappedSurface) {
       const glm::dvec3 mapped = glm::dvec3(transform * glm::dvec4(object.pointAt(t, height), 1.0));
       EXPECT_NEAR(implicitValue(*world, mapped), 0.0, 1e-12);
       // Normals map by the inverse transpose.
-      const glm::dvec3 normal = glm::normalize(glm::transpose(glm::inverse(glm::dmat3(transform))) * object.normalAt(t));
+      const glm::dvec3 normal =
+          glm::normalize(glm::transpose(glm::inverse(glm::dmat3(transform))) * object.normalAt(t));
       EXPECT_NEAR(glm::length(normal - implicitNormal(*world, mapped)), 0.0, 1e-9);
     }
   EXPECT_FALSE(object.transformed(glm::scale(glm::dmat4(1.0), glm::dvec3(1.0, 1.0, 0.0)))) << "flattened profile";

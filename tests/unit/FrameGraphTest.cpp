@@ -16,16 +16,17 @@ FrameNeeds searchedAndTessellated(SearchStrategy search = SearchStrategy::Crossh
 
 TEST(FrameGraph, APlanThatReadsWhatNothingWroteIsRefusedNamingThePassAndTheResource) {
   const FrameNeeds needs = searchedAndTessellated();
-  const auto problem = planProblem({PassId::Scene, PassId::MirrorGBuffer, PassId::Search, PassId::VirtualObjects}, needs);
+  const auto problem =
+      planProblem({PassId::Scene, PassId::MirrorGBuffer, PassId::Search, PassId::VirtualObjects}, needs);
   ASSERT_TRUE(problem);
   EXPECT_EQ(*problem, "frame plan: pass 'search' reads the G-buffer pyramid, which no pass before it writes");
-  const auto late = planProblem({PassId::Scene, PassId::MirrorGBuffer, PassId::GBufferPyramid, PassId::Search, PassId::VirtualObjects,
-                                 PassId::Tessellation},
+  const auto late = planProblem({PassId::Scene, PassId::MirrorGBuffer, PassId::GBufferPyramid, PassId::Search,
+                                 PassId::VirtualObjects, PassId::Tessellation},
                                 needs);
   ASSERT_TRUE(late) << "written after it is read";
   EXPECT_NE(late->find("'virtual-objects' reads the tessellated triangles"), std::string::npos) << *late;
-  EXPECT_FALSE(planProblem({PassId::Scene, PassId::MirrorGBuffer, PassId::GBufferPyramid, PassId::Search, PassId::Tessellation,
-                            PassId::VirtualObjects},
+  EXPECT_FALSE(planProblem({PassId::Scene, PassId::MirrorGBuffer, PassId::GBufferPyramid, PassId::Search,
+                            PassId::Tessellation, PassId::VirtualObjects},
                            needs));
 }
 
@@ -47,10 +48,12 @@ TEST(FrameGraph, PassesWhoseOutputNothingReadsAreCulled) {
   const std::vector<PassId> everything{PassId::Scene,        PassId::MirrorGBuffer, PassId::GBufferPyramid,
                                        PassId::RayHierarchy, PassId::ExplosionMap,  PassId::Search,
                                        PassId::Tessellation, PassId::VirtualObjects};
-  EXPECT_EQ(cullUnread(everything, rayCast), (std::vector<PassId>{PassId::Scene, PassId::MirrorGBuffer, PassId::VirtualObjects}));
+  EXPECT_EQ(cullUnread(everything, rayCast),
+            (std::vector<PassId>{PassId::Scene, PassId::MirrorGBuffer, PassId::VirtualObjects}));
   const FrameNeeds searched = searchedAndTessellated();
-  EXPECT_EQ(cullUnread(everything, searched), (std::vector<PassId>{PassId::Scene, PassId::MirrorGBuffer, PassId::GBufferPyramid,
-                                                                   PassId::Search, PassId::Tessellation, PassId::VirtualObjects}))
+  EXPECT_EQ(cullUnread(everything, searched),
+            (std::vector<PassId>{PassId::Scene, PassId::MirrorGBuffer, PassId::GBufferPyramid, PassId::Search,
+                                 PassId::Tessellation, PassId::VirtualObjects}))
       << "the crosshair search reads neither the hierarchy nor the maps";
   FrameNeeds untessellated = searched;
   untessellated.tessellated = false;

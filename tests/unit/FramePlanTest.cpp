@@ -43,8 +43,8 @@ std::vector<std::string_view> names(const std::vector<passes::PassId>& passes) {
 }
 
 // Default settings tessellate reflected geometry adaptively.
-const std::vector<std::string_view> kReflectionPasses{"scene", "mirror-gbuffer", "gbuffer-pyramid", "search",
-                                                      "tessellation", "virtual-objects"};
+const std::vector<std::string_view> kReflectionPasses{"scene",  "mirror-gbuffer", "gbuffer-pyramid",
+                                                      "search", "tessellation",   "virtual-objects"};
 
 }  // namespace
 
@@ -57,7 +57,8 @@ TEST(FramePlan, VisibleMirrorRunsTheReflectionPassesForEveryOtherReflectedObject
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings searched;
   searched.rayCast = passes::RayCastRule::Never;
-  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), searched);
+  const passes::FramePlan plan =
+      passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), searched);
   EXPECT_EQ(names(plan.passes), kReflectionPasses);
   EXPECT_TRUE(plan.tessellate);
   ASSERT_EQ(plan.mirrors.size(), 1u);
@@ -67,12 +68,14 @@ TEST(FramePlan, TessellationOffOrAtLevelZeroRunsNoTessellationPass) {
   const scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
   const auto slots = passes::ReflectionSlots::forScene(scene);
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  for (const auto& [mode, level] : {std::pair{passes::TessellationMode::None, 4}, std::pair{passes::TessellationMode::Paper, 0}}) {
+  for (const auto& [mode, level] :
+       {std::pair{passes::TessellationMode::None, 4}, std::pair{passes::TessellationMode::Paper, 0}}) {
     passes::ReflectionSettings settings;
     settings.rayCast = passes::RayCastRule::Never;
     settings.tessellation.mode = mode;
     settings.tessellation.maxLevel = level;
-    const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
+    const passes::FramePlan plan =
+        passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
     EXPECT_FALSE(plan.tessellate);
     EXPECT_EQ(std::count(plan.passes.begin(), plan.passes.end(), passes::PassId::Tessellation), 0);
     EXPECT_EQ(plan.passes.back(), passes::PassId::VirtualObjects);
@@ -94,8 +97,8 @@ TEST(FramePlan, MethodNoneRunsOnlyTheScenePass) {
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.method = passes::ReflectionMethod::None;
-  const passes::FramePlan plan = passes::planFrame(passes::ReflectionSlots::forScene(scene), pose, worldBounds(scene, pose),
-                                                   glm::ivec2(640, 480), settings);
+  const passes::FramePlan plan = passes::planFrame(passes::ReflectionSlots::forScene(scene), pose,
+                                                   worldBounds(scene, pose), glm::ivec2(640, 480), settings);
   EXPECT_EQ(names(plan.passes), std::vector<std::string_view>{"scene"});
 }
 
@@ -148,7 +151,8 @@ TEST(FramePlan, TheEnvironmentMapBaselineRunsNoSearchPyramidOrTessellation) {
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
   passes::ReflectionSettings settings;
   settings.method = passes::ReflectionMethod::EnvironmentMap;
-  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
+  const passes::FramePlan plan =
+      passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings);
   EXPECT_EQ(names(plan.passes), (std::vector<std::string_view>{"scene", "mirror-gbuffer", "environment-map"}));
   EXPECT_FALSE(plan.tessellate);
   EXPECT_EQ(plan.mirrors.size(), 1u);
@@ -164,7 +168,8 @@ TEST(FramePlan, HalfFloatGBuffersAreKeptOnlyForMirrorsNearTheOrigin) {
   EXPECT_TRUE(passes::halfFloatsResolve(sphere(glm::vec3(0.0f), 1.0f)));
   EXPECT_TRUE(passes::halfFloatsResolve(sphere({3.0f, 0.0f, 0.0f}, 1.0f)));
   EXPECT_FALSE(passes::halfFloatsResolve(sphere({1000.0f, 0.0f, 0.0f}, 1.0f)));
-  EXPECT_TRUE(passes::halfFloatsResolve(sphere({1000.0f, 0.0f, 0.0f}, 200.0f))) << "what counts is the distance in radii";
+  EXPECT_TRUE(passes::halfFloatsResolve(sphere({1000.0f, 0.0f, 0.0f}, 200.0f)))
+      << "what counts is the distance in radii";
 
   scene::Scene scene = *scene::makeBuiltinScene("checker-sphere");
   const auto slots = passes::ReflectionSlots::forScene(scene);
@@ -174,7 +179,8 @@ TEST(FramePlan, HalfFloatGBuffersAreKeptOnlyForMirrorsNearTheOrigin) {
   EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings).gbufferPrecision,
             passes::GBufferPrecision::Float16);
   const glm::vec3 far(5000.0f, 0.0f, 0.0f);  // the whole scene and camera moved away from the origin
-  for (glm::mat4& objectToWorld : pose.objectToWorld) objectToWorld = glm::translate(glm::mat4(1.0f), far) * objectToWorld;
+  for (glm::mat4& objectToWorld : pose.objectToWorld)
+    objectToWorld = glm::translate(glm::mat4(1.0f), far) * objectToWorld;
   pose.camera.eye += far;
   pose.camera.target += far;
   EXPECT_EQ(passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(640, 480), settings).gbufferPrecision,
@@ -207,7 +213,8 @@ TEST(FramePlan, APartIsRayCastWhereThatIsPredictedCheaperAndThenNeedsNoSearchPas
   }
   const auto crowdedSlots = passes::ReflectionSlots::forScene(crowded);
   const scene::ScenePose crowdedPose = scene::ScenePose::at(crowded, 0.0);
-  const passes::FramePlan searched = passes::planFrame(crowdedSlots, crowdedPose, worldBounds(crowded, crowdedPose), {1280, 720}, {});
+  const passes::FramePlan searched =
+      passes::planFrame(crowdedSlots, crowdedPose, worldBounds(crowded, crowdedPose), {1280, 720}, {});
   ASSERT_EQ(searched.mirrors.size(), 1u);
   EXPECT_GE(searched.mirrors[0].reflected.size(), 10u);
   EXPECT_EQ(searched.mirrors[0].method, passes::PartMethod::VirtualObjects);
@@ -219,10 +226,14 @@ TEST(FramePlan, APartIsRayCastWhereThatIsPredictedCheaperAndThenNeedsNoSearchPas
   never.rayCast = passes::RayCastRule::Never;
   always.rayCast = passes::RayCastRule::Always;
   everything.plan = passes::PlanScope::Everything;
-  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, never).mirrors[0].method, passes::PartMethod::VirtualObjects);
-  EXPECT_EQ(passes::planFrame(crowdedSlots, crowdedPose, worldBounds(crowded, crowdedPose), {1280, 720}, always).mirrors[0].method,
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, never).mirrors[0].method,
+            passes::PartMethod::VirtualObjects);
+  EXPECT_EQ(passes::planFrame(crowdedSlots, crowdedPose, worldBounds(crowded, crowdedPose), {1280, 720}, always)
+                .mirrors[0]
+                .method,
             passes::PartMethod::RayCast);
-  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, everything).mirrors[0].method, passes::PartMethod::VirtualObjects);
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {64, 48}, everything).mirrors[0].method,
+            passes::PartMethod::VirtualObjects);
 
   // The eye inside the mirror's bounds: it may fill the frame.
   math::Camera inside = pose.camera;
@@ -311,7 +322,8 @@ TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {
   EXPECT_LT(passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}), 0.5);
   EXPECT_GT(passes::convexImageDiameterPixels(mirror, boxAt({3.0f, 0.0f, 0.0f}, 0.5f), camera, {640, 480}), 10.0);
   const double mirrorDrawn = 2.0 * focal * std::tan(edge) * stretch;
-  EXPECT_NEAR(passes::convexImageDiameterPixels(mirror, boxAt({1.5f, 0.0f, 0.0f}, 0.6f), camera, {640, 480}), mirrorDrawn, 1e-6)
+  EXPECT_NEAR(passes::convexImageDiameterPixels(mirror, boxAt({1.5f, 0.0f, 0.0f}, 0.6f), camera, {640, 480}),
+              mirrorDrawn, 1e-6)
       << "an object touching the mirror's bounds can fill it, and no more";
   // Off the view axis the same object may be drawn larger.
   math::Camera aside = camera;
@@ -320,7 +332,8 @@ TEST(FramePlan, AConvexImageBoundFollowsThePathLength) {
             1.1 * passes::convexImageDiameterPixels(mirror, far, camera, {640, 480}));
   math::Camera inside = camera;
   inside.eye = {0.2f, 0.0f, 0.0f};
-  EXPECT_TRUE(std::isinf(passes::convexImageDiameterPixels(mirror, far, inside, {640, 480}))) << "the eye inside the mirror's bounds";
+  EXPECT_TRUE(std::isinf(passes::convexImageDiameterPixels(mirror, far, inside, {640, 480})))
+      << "the eye inside the mirror's bounds";
 }
 
 // Crack-free pixel tessellation searches only edges drawn at least the threshold long, and every
@@ -336,14 +349,16 @@ TEST(FramePlan, AnObjectNoEdgeOfWhichCanBeDrawnAsLongAsTheThresholdIsPlannedUnsp
   passes::TessellationSettings settings;
   settings.threshold = 4.0f;
   EXPECT_TRUE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, settings));
-  EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.5, camera, {640, 480}, settings)) << "a longer edge may be drawn longer";
+  EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.5, camera, {640, 480}, settings))
+      << "a longer edge may be drawn longer";
   settings.threshold = 0.1f;
   EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, settings)) << "a finer threshold";
   settings.threshold = 4.0f;
   for (const auto mode : {passes::TessellationMode::Paper, passes::TessellationMode::None}) {
     passes::TessellationSettings other = settings;
     other.mode = mode;
-    EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, other)) << "only crack-free decides by length";
+    EXPECT_FALSE(passes::edgesStayUnsplit(mirror, object, 0.02, camera, {640, 480}, other))
+        << "only crack-free decides by length";
   }
   passes::TessellationSettings angle = settings;
   angle.metric = passes::TessellationMetric::Angle;
@@ -371,8 +386,9 @@ passes::PlannedMirror plannedPart(const scene::Scene& scene, const passes::Refle
 }
 
 bool reflects(const passes::PlannedMirror& planned, const std::string& name, const scene::Scene& scene) {
-  return std::any_of(planned.reflected.begin(), planned.reflected.end(),
-                     [&](const passes::ReflectionSlotRange* range) { return scene.objects[range->object].name == name; });
+  return std::any_of(planned.reflected.begin(), planned.reflected.end(), [&](const passes::ReflectionSlotRange* range) {
+    return scene.objects[range->object].name == name;
+  });
 }
 
 }  // namespace
@@ -443,9 +459,11 @@ TEST(FramePlan, TheEnvironmentMapReachFollowsParallaxTexelsAndCurvature) {
               focal * 0.5 * (capture / (800.0 - capture) + 2.0 / 1024.0), 1e-6);
   EXPECT_NEAR(passes::environmentMapReach(mirror, 2.0, 800.0, camera, {640, 480}, 1024),
               2.0 * passes::environmentMapReach(mirror, 1.0, 800.0, camera, {640, 480}, 1024), 1e-6);
-  EXPECT_TRUE(std::isinf(passes::environmentMapReach(mirror, std::numeric_limits<double>::infinity(), 800.0, camera, {640, 480}, 1024)))
+  EXPECT_TRUE(std::isinf(
+      passes::environmentMapReach(mirror, std::numeric_limits<double>::infinity(), 800.0, camera, {640, 480}, 1024)))
       << "a flat mirror shows parallax undiminished";
-  EXPECT_TRUE(std::isinf(passes::environmentMapReach(mirror, 1.0, 2.0 * capture, camera, {640, 480}, 1024))) << "objects near the mirror";
+  EXPECT_TRUE(std::isinf(passes::environmentMapReach(mirror, 1.0, 2.0 * capture, camera, {640, 480}, 1024)))
+      << "objects near the mirror";
 }
 
 TEST(FramePlan, AMirrorReflectingOnlyFarSurroundingsUsesTheEnvironmentMapWithinTheBudget) {
@@ -453,7 +471,8 @@ TEST(FramePlan, AMirrorReflectingOnlyFarSurroundingsUsesTheEnvironmentMapWithinT
   scene::Scene far = *scene::makeBuiltinScene("checker-sphere");
   for (scene::SceneObject& object : far.objects)
     if (!object.mirror) object.reflected = false;
-  for (const glm::vec3 centre : {glm::vec3(0, 0, -1000), glm::vec3(1000, 30, 0), glm::vec3(150, -90, 1000), glm::vec3(-1000, -60, 150)})
+  for (const glm::vec3 centre :
+       {glm::vec3(0, 0, -1000), glm::vec3(1000, 30, 0), glm::vec3(150, -90, 1000), glm::vec3(-1000, -60, 150)})
     far = withBox(far, centre, 200.0f);
   passes::ReflectionSettings settings;
   settings.errorBudgetPixels = 2.0f;
@@ -467,19 +486,23 @@ TEST(FramePlan, AMirrorReflectingOnlyFarSurroundingsUsesTheEnvironmentMapWithinT
   EXPECT_GT(plan.mirrors[0].environmentReach, 0.0f);
   EXPECT_EQ(plan.mirrors[0].reflected.size(), 4u) << "the cube captures what the mirror reflects";
   EXPECT_FALSE(plan.search);
-  EXPECT_EQ(names(plan.passes), (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects", "environment-map"}));
+  EXPECT_EQ(names(plan.passes),
+            (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects", "environment-map"}));
 
   passes::ReflectionSettings exact = settings;
   exact.errorBudgetPixels = 0.0f;
-  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {640, 480}, exact).mirrors[0].method, passes::PartMethod::VirtualObjects);
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {640, 480}, exact).mirrors[0].method,
+            passes::PartMethod::VirtualObjects);
   passes::ReflectionSettings coarse = settings;
   coarse.environmentMapSize = 64;  // a texel turns the reflection by more than the budget allows
-  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {640, 480}, coarse).mirrors[0].method, passes::PartMethod::VirtualObjects);
+  EXPECT_EQ(passes::planFrame(slots, pose, bounds, {640, 480}, coarse).mirrors[0].method,
+            passes::PartMethod::VirtualObjects);
 
   // One box near the mirror brings the parallax back.
   const scene::Scene near = withBox(far, {3.0f, 0.0f, 0.0f}, 0.5f);
   const scene::ScenePose nearPose = scene::ScenePose::at(near, 0.0);
-  EXPECT_EQ(passes::planFrame(passes::ReflectionSlots::forScene(near), nearPose, worldBounds(near, nearPose), {640, 480}, settings)
+  EXPECT_EQ(passes::planFrame(passes::ReflectionSlots::forScene(near), nearPose, worldBounds(near, nearPose),
+                              {640, 480}, settings)
                 .mirrors[0]
                 .method,
             passes::PartMethod::VirtualObjects);
@@ -502,7 +525,8 @@ TEST(MeasuredCosts, ThePlanFollowsTheDeviceWithinAFewFramesAndBack) {
   const auto runFrames = [&](int frames) {
     for (int i = 0; i < frames; ++i) {
       const passes::MeasuredCosts::FrameRole role = costs.nextFrame();
-      const passes::FramePlan plan = passes::planFrame(slots, pose, bounds, glm::ivec2(640, 480), planned, costs.rates(), role.explore);
+      const passes::FramePlan plan =
+          passes::planFrame(slots, pose, bounds, glm::ivec2(640, 480), planned, costs.rates(), role.explore);
       ASSERT_FALSE(plan.mirrors.empty());
       passes::PartCost fitted, measured;
       predicted = took = 0.0;
@@ -538,7 +562,8 @@ TEST(MeasuredCosts, AMeasurementMovesOnlyTheRatesOfTheMethodsThatRan) {
   EXPECT_EQ(costs.rates().search, 0.5) << "the first measurement replaces the fit";
   EXPECT_EQ(costs.rates().rayCast, 1.0);
   costs.observe({10.0, 0.0}, {15.0, 0.0});
-  EXPECT_EQ(costs.rates().search, 0.5 + passes::MeasuredCosts::kLearningRate * (1.5 - 0.5)) << "later ones move it part way";
+  EXPECT_EQ(costs.rates().search, 0.5 + passes::MeasuredCosts::kLearningRate * (1.5 - 0.5))
+      << "later ones move it part way";
   costs.observe({0.0, 4.0}, {0.0, 400000.0});  // an outlier moves a rate only so far
   EXPECT_GT(costs.rates().rayCast, 1.0);
   EXPECT_LE(costs.rates().rayCast, 1e3);

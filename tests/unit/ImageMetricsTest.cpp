@@ -134,11 +134,11 @@ TEST(ImageMetrics, MaskedMismatchCountsPixelsBeyondTheThresholdInsideTheMaskOnly
     byte = static_cast<std::uint8_t>(byte + delta);
   };
   for (int x = 0; x < 4; ++x) mask[static_cast<std::size_t>(4 + x)] = 1;  // the middle row: 4 pixels inside
-  change(0, 1, 0, 16);   // exactly the threshold: a match
-  change(1, 1, 1, -17);  // beyond it: a mismatch
-  change(2, 1, 2, 17);   // beyond it in blue alone: a mismatch
-  change(3, 1, 3, 100);  // alpha is not compared
-  change(0, 0, 0, 100);  // outside the mask
+  change(0, 1, 0, 16);                                                    // exactly the threshold: a match
+  change(1, 1, 1, -17);                                                   // beyond it: a mismatch
+  change(2, 1, 2, 17);                                                    // beyond it in blue alone: a mismatch
+  change(3, 1, 3, 100);                                                   // alpha is not compared
+  change(0, 0, 0, 100);                                                   // outside the mask
   change(3, 2, 1, -100);
   auto result = maskedMismatch(a.view(), b.view(), mask);
   ASSERT_TRUE(result) << result.error();

@@ -323,19 +323,25 @@ TEST_F(Importer, GltfSceneRefusesBrokenTreesAndChoicesByName) {
     document["scenes"] = json::parse(scenes);
     Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)), choice);
     ASSERT_FALSE(imported.ok()) << expected;
-    EXPECT_NE(imported.error().find(expected), std::string::npos) << "message: " << imported.error() << "\nlacks: " << expected;
+    EXPECT_NE(imported.error().find(expected), std::string::npos)
+        << "message: " << imported.error() << "\nlacks: " << expected;
   };
   expectSceneFailure(R"([{"mesh": 0, "children": [1]}, {"children": [0]}])", R"([{"nodes": [0]}])",
                      "node 0 is reached twice: the node tree has a cycle or a node with two parents");
-  expectSceneFailure(R"([{"children": [2]}, {"children": [2]}, {"mesh": 0}])", R"([{"nodes": [0, 1]}])", "node 2 is reached twice");
+  expectSceneFailure(R"([{"children": [2]}, {"children": [2]}, {"mesh": 0}])", R"([{"nodes": [0, 1]}])",
+                     "node 2 is reached twice");
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [3]}])", "scene 0 refers to node 3, but the file has 1");
   expectSceneFailure(R"([{"mesh": 0}])", R"([])", "the file holds no scene");
-  expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no scene 2 (the file has 1; pick one of 0..0 with --gltf-scene, or \"scene\" in an include)",
-                     GltfSceneChoice{2, std::nullopt, {}});
+  expectSceneFailure(
+      R"([{"mesh": 0}])", R"([{"nodes": [0]}])",
+      "there is no scene 2 (the file has 1; pick one of 0..0 with --gltf-scene, or \"scene\" in an include)",
+      GltfSceneChoice{2, std::nullopt, {}});
   expectSceneFailure(R"([{"mesh": 0}])", R"([{"nodes": [0]}])", "there is no camera 0 (the file has 0)",
                      GltfSceneChoice{std::nullopt, 0, {}});
-  expectSceneFailure(R"([{"mesh": 0, "translation": [1, 2]}])", R"([{"nodes": [0]}])", "node 0: translation must have 3 numbers");
-  expectSceneFailure(R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}])", R"([{"nodes": [0]}])", "node 0: rotation is a zero quaternion");
+  expectSceneFailure(R"([{"mesh": 0, "translation": [1, 2]}])", R"([{"nodes": [0]}])",
+                     "node 0: translation must have 3 numbers");
+  expectSceneFailure(R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}])", R"([{"nodes": [0]}])",
+                     "node 0: rotation is a zero quaternion");
   expectSceneFailure(R"([{"mesh": 5}])", R"([{"nodes": [0]}])", "node 0 refers to mesh 5, but the file has 1");
   expectSceneFailure(R"([{"camera": 0}])", R"([{"nodes": [0]}])", "scene 0 draws no mesh");
 }
@@ -350,7 +356,8 @@ TEST_F(Importer, GltfSceneKeepsAnOpenChromeMeshInItsColourAndSaysSo) {
   ASSERT_TRUE(imported.ok()) << imported.error();
   EXPECT_FALSE(imported->scene.objects[0].mirror.has_value());
   ASSERT_EQ(imported->notes.size(), 1u);
-  EXPECT_NE(imported->notes[0].find("'shard' has a mirror material but an open mesh"), std::string::npos) << imported->notes[0];
+  EXPECT_NE(imported->notes[0].find("'shard' has a mirror material but an open mesh"), std::string::npos)
+      << imported->notes[0];
 }
 
 // The textured box: base colour textures from an external PNG, one per sampler the file pairs it with.
@@ -389,14 +396,19 @@ TEST_F(Importer, GltfSceneRefusesBrokenTexturesByName) {
     if (!image.empty()) write("picture.png", image);
     Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
     ASSERT_FALSE(imported.ok()) << expected;
-    EXPECT_NE(imported.error().find(expected), std::string::npos) << "message: " << imported.error() << "\nlacks: " << expected;
+    EXPECT_NE(imported.error().find(expected), std::string::npos)
+        << "message: " << imported.error() << "\nlacks: " << expected;
   };
   const json picture = json::parse(R"({"images": [{"uri": "picture.png"}], "textures": [{"source": 0}]})");
   expectFailure(picture, "image 0 (picture.png): not an image this build reads", "words, not pixels");
-  expectFailure(picture, "image 0 (picture.png): the image cannot be decoded", readAll(kGltfScenes / ".." / "scenes" / "bad" / "assets" / "truncated.png"));
-  expectFailure(picture, "image 0 (picture.png): the image is 9000x16 texels", readAll(kGltfScenes / ".." / "scenes" / "bad" / "assets" / "huge.png"));
-  expectFailure(json::parse(R"({"images": [{"uri": "../outside.png"}], "textures": [{"source": 0}]})"), "climbs out of");
-  expectFailure(json::parse(R"({"textures": []})"), "material 0: baseColorTexture refers to texture 0, but the file has 0");
+  expectFailure(picture, "image 0 (picture.png): the image cannot be decoded",
+                readAll(kGltfScenes / ".." / "scenes" / "bad" / "assets" / "truncated.png"));
+  expectFailure(picture, "image 0 (picture.png): the image is 9000x16 texels",
+                readAll(kGltfScenes / ".." / "scenes" / "bad" / "assets" / "huge.png"));
+  expectFailure(json::parse(R"({"images": [{"uri": "../outside.png"}], "textures": [{"source": 0}]})"),
+                "climbs out of");
+  expectFailure(json::parse(R"({"textures": []})"),
+                "material 0: baseColorTexture refers to texture 0, but the file has 0");
   json sampler = picture;
   sampler["textures"][0]["sampler"] = 3;
   expectFailure(sampler, "refers to sampler 3, but the file has 0", readAll(kGltfScenes / "crate.png"));

@@ -34,7 +34,7 @@ TEST(MeshSubdivision, SplitsEveryLongEdgeWithoutCracksOrChangeOfSurface) {
     EXPECT_LE(longestEdge(*split), 0.1f) << mesh.name;
     EXPECT_GT(split->triangleCount(), mesh.triangleCount()) << mesh.name;
     EXPECT_NEAR(area(*split), area(mesh), 1e-4 * area(mesh)) << mesh.name;  // planar splits keep the faces
-    EXPECT_TRUE(topology::isWatertight(*split)) << mesh.name;             // conforming: no T-junction
+    EXPECT_TRUE(topology::isWatertight(*split)) << mesh.name;               // conforming: no T-junction
     EXPECT_EQ(topology::trianglesFacingAgainstNormals(*split), 0u) << mesh.name;
     for (const Vertex& v : split->vertices) EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
   }

@@ -15,7 +15,8 @@ namespace {
 
 glm::vec3 triangleCentre(const Mesh& mesh, std::size_t t) {
   return (mesh.vertices[mesh.indices[3 * t]].position + mesh.vertices[mesh.indices[3 * t + 1]].position +
-          mesh.vertices[mesh.indices[3 * t + 2]].position) / 3.0f;
+          mesh.vertices[mesh.indices[3 * t + 2]].position) /
+         3.0f;
 }
 
 }  // namespace
@@ -57,7 +58,8 @@ TEST(MirrorParts, TorusSplitsIntoItsConvexOutsideAndSaddleInside) {
 
 TEST(MirrorParts, KitchenBowlSplitsIntoConvexOutsideAndConcaveInside) {
   const Scene kitchen = builtin::kitchenScene();
-  const auto bowl = std::find_if(kitchen.objects.begin(), kitchen.objects.end(), [](const auto& o) { return o.name == "bowl"; });
+  const auto bowl =
+      std::find_if(kitchen.objects.begin(), kitchen.objects.end(), [](const auto& o) { return o.name == "bowl"; });
   ASSERT_NE(bowl, kitchen.objects.end());
   const Mesh& mesh = kitchen.meshes[bowl->mesh];
   const MirrorParts parts = MirrorParts::of(mesh, bowl->mirror->curvature);
@@ -111,7 +113,8 @@ TEST(MirrorParts, DeclaredCurvatureKeepsTheMeshWhole) {
 TEST(MirrorParts, ManyPiecesMergeDownToTheLimit) {
   Mesh many{"many", {}, {}};
   for (int i = 0; i < 20; ++i)
-    primitives::append(many, primitives::box("b", glm::vec3(0.1f)), glm::translate(glm::mat4(1.0f), glm::vec3(float(i), 0.0f, 0.0f)));
+    primitives::append(many, primitives::box("b", glm::vec3(0.1f)),
+                       glm::translate(glm::mat4(1.0f), glm::vec3(float(i), 0.0f, 0.0f)));
   const MirrorParts parts = MirrorParts::of(many, MirrorCurvature::Mixed);
   ASSERT_LE(parts.parts.size(), MirrorParts::kMaxParts);
   ASSERT_EQ(parts.triangleParts.size(), many.triangleCount());
@@ -123,7 +126,8 @@ TEST(MirrorParts, ManyPiecesMergeDownToTheLimit) {
 
 TEST(MirrorParts, DegenerateMeshesGiveOnePart) {
   EXPECT_EQ(MirrorParts::of(Mesh{"empty", {}, {}}, MirrorCurvature::Mixed).parts.size(), 1u);
-  Mesh sliver{"sliver", {{{0, 0, 0}, {0, 1, 0}, {}}, {{1, 0, 0}, {0, 1, 0}, {}}, {{2, 0, 0}, {0, 1, 0}, {}}}, {0, 1, 2}};
+  Mesh sliver{
+      "sliver", {{{0, 0, 0}, {0, 1, 0}, {}}, {{1, 0, 0}, {0, 1, 0}, {}}, {{2, 0, 0}, {0, 1, 0}, {}}}, {0, 1, 2}};
   const MirrorParts parts = MirrorParts::of(sliver, MirrorCurvature::Mixed);
   ASSERT_EQ(parts.parts.size(), 1u);
   EXPECT_EQ(parts.parts[0].triangles, 1u);

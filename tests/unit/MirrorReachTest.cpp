@@ -36,10 +36,13 @@ TEST(MirrorReach, AnObjectInTheEyesShadowOfAClosedConvexMirrorCannotAppearInIt) 
   const passes::MirrorReach ball = unitBall();
   const glm::vec3 eye(0.0f, 0.0f, 5.0f);
   EXPECT_FALSE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, -3.0f}, 0.2f), eye)) << "small, straight behind";
-  EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, -3.0f}, 1.5f), eye)) << "wider than the shadow there";
+  EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, -3.0f}, 1.5f), eye))
+      << "wider than the shadow there";
   EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({2.5f, 0.0f, -3.0f}, 0.2f), eye)) << "beside the shadow";
-  EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, 2.5f}, 0.2f), eye)) << "between the eye and the mirror";
-  EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, -0.5f}, 0.2f), glm::vec3(0.0f))) << "the eye inside the mirror";
+  EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, 2.5f}, 0.2f), eye))
+      << "between the eye and the mirror";
+  EXPECT_TRUE(passes::canAppearIn(ball, kIdentity, cube({0.0f, 0.0f, -0.5f}, 0.2f), glm::vec3(0.0f)))
+      << "the eye inside the mirror";
   // Moved and scaled with the mirror: a ball of radius 2 at x = 10 shadows more.
   const glm::mat4 placed = glm::scale(glm::translate(kIdentity, {10.0f, 0.0f, 0.0f}), glm::vec3(2.0f));
   EXPECT_FALSE(passes::canAppearIn(ball, placed, cube({10.0f, 0.0f, -4.0f}, 0.6f), eye + glm::vec3(10.0f, 0.0f, 0.0f)));
@@ -67,7 +70,8 @@ TEST(MirrorReach, AnObjectBehindEveryTangentPlaneOfAPartCannotAppearInIt) {
   EXPECT_FALSE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -2.0f, 0.0f}, 0.3f), eye)) << "below the plate";
   EXPECT_FALSE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -0.6f, 0.0f}, 0.3f), eye))
       << "just below: a flat part's tangent planes are one plane";
-  EXPECT_TRUE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -0.1f, 0.0f}, 0.3f), eye)) << "reaching above the plane";
+  EXPECT_TRUE(passes::canAppearIn(reach, kIdentity, cube({0.0f, -0.1f, 0.0f}, 0.3f), eye))
+      << "reaching above the plane";
   EXPECT_TRUE(passes::canAppearIn(reach, kIdentity, cube({3.0f, 1.0f, 0.0f}, 0.3f), eye)) << "above it";
   EXPECT_TRUE(passes::facesEye(reach, kIdentity, eye));
   EXPECT_FALSE(passes::facesEye(reach, kIdentity, {0.5f, -3.0f, 2.0f})) << "the eye below sees its back";
@@ -93,11 +97,13 @@ TEST(MirrorReach, AnObjectLeftOutOfACurvedPartIsBehindEveryTangentPlane) {
   ASSERT_GT(reach.normalCosine, 0.75f);
   std::mt19937 random(20261203);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-  const glm::mat4 placed = glm::rotate(glm::translate(kIdentity, {1.0f, 2.0f, -0.5f}), 0.7f, glm::normalize(glm::vec3(1, 2, 3))) *
-                           glm::scale(kIdentity, glm::vec3(1.5f));
+  const glm::mat4 placed =
+      glm::rotate(glm::translate(kIdentity, {1.0f, 2.0f, -0.5f}), 0.7f, glm::normalize(glm::vec3(1, 2, 3))) *
+      glm::scale(kIdentity, glm::vec3(1.5f));
   int leftOut = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    const glm::vec3 centre = glm::vec3(placed * glm::vec4(3.0f * unit(random), 2.0f * unit(random), 3.0f * unit(random), 1.0f));
+    const glm::vec3 centre =
+        glm::vec3(placed * glm::vec4(3.0f * unit(random), 2.0f * unit(random), 3.0f * unit(random), 1.0f));
     const math::Bounds object = cube(centre, 0.05f + 0.3f * (unit(random) + 1.0f));
     if (passes::canAppearIn(reach, placed, object, {0.0f, 10.0f, 0.0f})) continue;
     ++leftOut;

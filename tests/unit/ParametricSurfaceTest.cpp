@@ -102,7 +102,9 @@ TEST(BSplineSurface, GarbageIsRefusedByName) {
   EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.degree.x = 4; }).find("degree along u"), std::string::npos);
   EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.knotsU.pop_back(); }).find("knots along u has 6 knots"),
             std::string::npos);
-  EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.knotsV = {0.0, 1.0, 0.5, 1.0}; }).find("must not decrease"),
+  EXPECT_NE(problemWith([](math::BSplineSurface& s) {
+              s.knotsV = {0.0, 1.0, 0.5, 1.0};
+            }).find("must not decrease"),
             std::string::npos);
   EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.knotsU = {0, 0, 0, 0, 0, 0, 0}; }).find("no domain"),
             std::string::npos);
@@ -110,7 +112,8 @@ TEST(BSplineSurface, GarbageIsRefusedByName) {
             std::string::npos);
   EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.controlNet[3].y = std::nan(""); }).find("control point 3"),
             std::string::npos);
-  EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.knotsU[2] = INFINITY; }).find("not a finite"), std::string::npos);
+  EXPECT_NE(problemWith([](math::BSplineSurface& s) { s.knotsU[2] = INFINITY; }).find("not a finite"),
+            std::string::npos);
 }
 
 TEST(PatchReflection, PlaneMirrorMatchesTheMirroredVertexConstruction) {
@@ -172,7 +175,8 @@ TEST(ParametricMesh, GridDeviationFallsWithTheSquareOfTheSegments) {
   const scene::Mesh fine = scene::parametricMesh("teapot", scene::builtin::utahTeapotPatches(), 16);
   EXPECT_GT(fine.gridDeviation, 0.0);
   EXPECT_NEAR(coarse.gridDeviation / fine.gridDeviation, 4.0, 1.0);
-  const scene::Mesh flat = scene::parametricMesh("plane", {planePatch({-2.0, 0.0, 2.0}, {4.0, 0.0, 0.0}, {0.0, 0.0, -4.0})}, 4);
+  const scene::Mesh flat =
+      scene::parametricMesh("plane", {planePatch({-2.0, 0.0, 2.0}, {4.0, 0.0, 0.0}, {0.0, 0.0, -4.0})}, 4);
   EXPECT_NEAR(flat.gridDeviation, 0.0, 1e-12);
 }
 

@@ -342,8 +342,8 @@ TEST(SceneLoader, IncludedGltfScenesAreGroupsWithNamedObjects) {
   ASSERT_TRUE(scene.ok()) << scene.error();
   std::vector<std::string> names;
   for (const SceneObject& object : scene->objects) names.push_back(object.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"ground", "left/crate", "left/floor", "right/crate", "right/floor", "ball/sphere",
-                                             "ball/floor", "ball/red box", "ball/green box"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"ground", "left/crate", "left/floor", "right/crate", "right/floor",
+                                             "ball/sphere", "ball/floor", "ball/red box", "ball/green box"}));
   const SceneObject& right = scene->objects[3];
   EXPECT_FLOAT_EQ(right.transform.scale.x, 0.5f);
   EXPECT_FLOAT_EQ(right.transform.translation.x, 3.0f);
@@ -365,12 +365,14 @@ TEST(SceneLoader, AnIncludesMirrorRuleOverridesTheGltfThresholds) {
   Result<Scene> scene = loadSceneFile(fs::path(SPECULA_TEST_DATA_DIR) / "gltf" / "mirror-rule.json");
   ASSERT_TRUE(scene.ok()) << scene.error();
   const auto named = [&](const std::string& name) {
-    return std::find_if(scene->objects.begin(), scene->objects.end(), [&](const SceneObject& o) { return o.name == name; });
+    return std::find_if(scene->objects.begin(), scene->objects.end(),
+                        [&](const SceneObject& o) { return o.name == name; });
   };
   ASSERT_NE(named("ball/sphere"), scene->objects.end());
   EXPECT_FALSE(named("ball/sphere")->mirror.has_value()) << "\"chrome\": false";
   ASSERT_NE(named("engine/dipstick"), scene->objects.end());
-  EXPECT_TRUE(named("engine/dipstick")->mirror.has_value()) << "copper, metallic 0.8 and roughness 0.3, passes 0.75 / 0.3";
+  EXPECT_TRUE(named("engine/dipstick")->mirror.has_value())
+      << "copper, metallic 0.8 and roughness 0.3, passes 0.75 / 0.3";
   EXPECT_TRUE(named("engine/flywheel")->mirror.has_value()) << "chrome still passes";
   EXPECT_FALSE(named("engine/block")->mirror.has_value());
   EXPECT_EQ(scene->mirrorCount(), 10u) << "the engine's six chrome parts and its four copper ones";

@@ -19,7 +19,8 @@ using session::SessionSetting;
 using session::SessionSettings;
 
 CommandLine settingsCommandLine() {
-  return CommandLine("test", "every session setting", app::settingOptions(session::sessionSettingsSchema(), SessionSettings{}));
+  return CommandLine("test", "every session setting",
+                     app::settingOptions(session::sessionSettingsSchema(), SessionSettings{}));
 }
 
 // What `--name text` does: the value it sets, or the error.
@@ -196,7 +197,8 @@ TEST(SettingsSchema, TheBrowsersSchemaCarriesTheSameRangesAndChoices) {
     EXPECT_EQ((*entry)["default"], settingText(info, setting.read(SessionSettings{})));
     if (info.type == SettingType::Choice) {
       ASSERT_EQ((*entry)["choices"].size(), info.choices.size()) << info.name;
-      for (std::size_t i = 0; i < info.choices.size(); ++i) EXPECT_EQ((*entry)["choices"][i]["name"], info.choices[i].name);
+      for (std::size_t i = 0; i < info.choices.size(); ++i)
+        EXPECT_EQ((*entry)["choices"][i]["name"], info.choices[i].name);
     } else {
       EXPECT_EQ((*entry)["min"], info.min);
       EXPECT_EQ((*entry)["max"], info.max);

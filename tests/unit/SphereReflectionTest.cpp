@@ -123,7 +123,8 @@ TEST(Reflection, MirrorAcrossPlaneKeepsTheDistanceToThePlanePoint) {
 TEST(Reflection, VirtualVertexOnTheEyeRayEqualsTheMirroredVertexAtAnExactReflectionPoint) {
   const Sphere s{{0.2, -0.1, 0.4}, 1.3};
   const glm::dvec3 eye(3.0, 2.5, 6.0);
-  for (const glm::dvec3& vertex : {glm::dvec3(-2.0, 0.5, 3.0), glm::dvec3(4.0, -1.0, -2.5), glm::dvec3(0.5, 3.0, 0.0)}) {
+  for (const glm::dvec3& vertex :
+       {glm::dvec3(-2.0, 0.5, 3.0), glm::dvec3(4.0, -1.0, -2.5), glm::dvec3(0.5, 3.0, 0.0)}) {
     auto r = sphereReflectionPoint(s, eye, vertex);
     ASSERT_TRUE(r);
     const glm::dvec3 n = glm::normalize(*r - s.center);

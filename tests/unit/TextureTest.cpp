@@ -60,7 +60,8 @@ TEST(Texture, GarbageIsRefusedByNameBeforeAnyLargeAllocation) {
   refused("GIF89a and a header of nonsense", "a texture side must be 1..8192");
   refused(fileBytes(kAssets / "bad" / "assets" / "not-an-image.png"), "not an image this build reads");
   refused(fileBytes(kAssets / "bad" / "assets" / "truncated.png"), "the image cannot be decoded");
-  refused(fileBytes(kAssets / "bad" / "assets" / "huge.png"), "the image is 9000x16 texels; a texture side must be 1..8192");
+  refused(fileBytes(kAssets / "bad" / "assets" / "huge.png"),
+          "the image is 9000x16 texels; a texture side must be 1..8192");
 }
 
 TEST(Texture, MipLevelsAverageInLinearLight) {
@@ -88,9 +89,14 @@ TEST(TextureSampler, FollowsGlFilteringAndWrapping) {
   EXPECT_FLOAT_EQ(reference::sampleTexture(repeat, {0.5f, 0.25f}, 0.0f).x, 0.5f);
   // Repeat: u = 1.25 is u = 0.25; clamp: the edge texel; mirrored repeat: u = 1.25 mirrors to 0.75.
   EXPECT_FLOAT_EQ(reference::sampleTexture(repeat, {1.25f, 0.25f}, 0.0f).x, 1.0f);
-  EXPECT_FLOAT_EQ(reference::sampleTexture(textureOf(2, 2, texels, scene::TextureWrap::ClampToEdge), {1.25f, 0.25f}, 0.0f).y, 1.0f);
-  EXPECT_FLOAT_EQ(reference::sampleTexture(textureOf(2, 2, texels, scene::TextureWrap::MirroredRepeat), {1.25f, 0.25f}, 0.0f).y, 1.0f);
-  EXPECT_FLOAT_EQ(reference::sampleTexture(textureOf(2, 2, texels, scene::TextureWrap::MirroredRepeat), {-0.25f, 0.25f}, 0.0f).x, 1.0f);
+  EXPECT_FLOAT_EQ(
+      reference::sampleTexture(textureOf(2, 2, texels, scene::TextureWrap::ClampToEdge), {1.25f, 0.25f}, 0.0f).y, 1.0f);
+  EXPECT_FLOAT_EQ(
+      reference::sampleTexture(textureOf(2, 2, texels, scene::TextureWrap::MirroredRepeat), {1.25f, 0.25f}, 0.0f).y,
+      1.0f);
+  EXPECT_FLOAT_EQ(
+      reference::sampleTexture(textureOf(2, 2, texels, scene::TextureWrap::MirroredRepeat), {-0.25f, 0.25f}, 0.0f).x,
+      1.0f);
   // A footprint of the whole texture reads the 1×1 level, the linear mean of all four.
   const glm::vec4 mean = reference::sampleTexture(repeat, {0.3f, 0.7f}, 1.0f);
   EXPECT_NEAR(mean.x, linear(repeat.levels[1].rgba[0]), 1e-6f);
@@ -103,7 +109,8 @@ TEST(TextureSampler, FollowsGlFilteringAndWrapping) {
 TEST(TextureSampler, FootprintGrowsWithDistanceAndObliquity) {
   EXPECT_FLOAT_EQ(reference::pixelFootprint(10.0f, 1.0f, 0.001f, 1.0f), 0.01f);
   EXPECT_FLOAT_EQ(reference::pixelFootprint(10.0f, 1.0f, 0.001f, -0.5f), 0.02f);
-  EXPECT_FLOAT_EQ(reference::pixelFootprint(10.0f, 0.5f, 0.001f, 1.0f), 0.005f) << "an eye ray off the axis is shallower";
+  EXPECT_FLOAT_EQ(reference::pixelFootprint(10.0f, 0.5f, 0.001f, 1.0f), 0.005f)
+      << "an eye ray off the axis is shallower";
   EXPECT_FLOAT_EQ(reference::pixelFootprint(10.0f, 1.0f, 0.001f, 0.0f), 1.0f) << "grazing is capped at 1/100";
 }
 

@@ -20,8 +20,10 @@ std::vector<glm::vec3> positionsOf(const specula::scene::Mesh& mesh) {
 std::optional<float> bruteForce(const TriangleBvh& bvh, const glm::vec3& origin, const glm::vec3& direction) {
   std::optional<float> best;
   for (const TriangleBvh::Triangle& triangle : bvh.triangles()) {
-    TriangleBvh single = TriangleBvh::build(std::vector<glm::vec3>{triangle.a, triangle.b, triangle.c}, std::vector<std::uint32_t>{0, 1, 2});
-    if (auto hit = single.intersect(origin, direction, 1e-6f, 1e30f); hit && (!best || hit->distance < *best)) best = hit->distance;
+    TriangleBvh single = TriangleBvh::build(std::vector<glm::vec3>{triangle.a, triangle.b, triangle.c},
+                                            std::vector<std::uint32_t>{0, 1, 2});
+    if (auto hit = single.intersect(origin, direction, 1e-6f, 1e30f); hit && (!best || hit->distance < *best))
+      best = hit->distance;
   }
   return best;
 }
@@ -46,7 +48,8 @@ TEST(TriangleBvh, NearestHitsMatchBruteForceOnATorus) {
     ++hits;
     EXPECT_NEAR(hit->distance, *expected, 1e-5f) << "ray " << i;
     // The reported triangle and barycentrics give back the hit point.
-    const glm::vec3 a = positions[torus.indices[3 * hit->triangle]], b = positions[torus.indices[3 * hit->triangle + 1]],
+    const glm::vec3 a = positions[torus.indices[3 * hit->triangle]],
+                    b = positions[torus.indices[3 * hit->triangle + 1]],
                     c = positions[torus.indices[3 * hit->triangle + 2]];
     const glm::vec3 point = a + hit->barycentric.x * (b - a) + hit->barycentric.y * (c - a);
     EXPECT_LT(glm::distance(point, origin + hit->distance * direction), 1e-4f) << "ray " << i;
@@ -70,7 +73,8 @@ TEST(TriangleBvh, StaysWithinTheTraversalStackAndKeepsDegenerateInput) {
   std::vector<glm::vec3> positions;
   std::vector<std::uint32_t> indices;
   for (std::uint32_t i = 0; i < 20000; ++i) {
-    positions.insert(positions.end(), {glm::vec3(float(i), 0, 0), glm::vec3(float(i) + 1, 0, 0), glm::vec3(float(i), 1e-7f, 0)});
+    positions.insert(positions.end(),
+                     {glm::vec3(float(i), 0, 0), glm::vec3(float(i) + 1, 0, 0), glm::vec3(float(i), 1e-7f, 0)});
     indices.insert(indices.end(), {3 * i, 3 * i + 1, 3 * i + 2});
   }
   const TriangleBvh bvh = TriangleBvh::build(positions, indices);

@@ -18,9 +18,11 @@ struct Entry {
 constexpr std::array kEntries{
     Entry{"checker-sphere", "mirror sphere of radius 1 over an unlit 16 m checker floor; the camera orbits",
           builtin::checkerSphereScene},
-    Entry{"mesh-sphere", "checker-sphere with its mirror as what real mirrors are, a 128x64 mesh (the sphere only measures it)",
+    Entry{"mesh-sphere",
+          "checker-sphere with its mirror as what real mirrors are, a 128x64 mesh (the sphere only measures it)",
           builtin::meshSphereScene},
-    Entry{"cylinder", "mirror cylinder (a declared extrusion of a circle) among a box, a ball and a pillar on the checker floor",
+    Entry{"cylinder",
+          "mirror cylinder (a declared extrusion of a circle) among a box, a ball and a pillar on the checker floor",
           builtin::cylinderScene},
     Entry{"kitchen", "metal bowl (mixed curvature) on a kitchen table with fruit, cup and bottle (~15k vertices)",
           builtin::kitchenScene},
@@ -34,7 +36,8 @@ constexpr std::array kEntries{
           builtin::teapotTableScene},
     Entry{"beads", "thirty chrome beads a pixel or two wide on the teapot table (~20k vertices): many tiny mirrors",
           builtin::beadsScene},
-    Entry{"utah-teapot", "chrome Utah teapot (32 Bezier patches, a parametric mirror) among coloured objects on a checker floor",
+    Entry{"utah-teapot",
+          "chrome Utah teapot (32 Bezier patches, a parametric mirror) among coloured objects on a checker floor",
           builtin::utahTeapotScene},
 };
 

@@ -16,9 +16,9 @@ Scene cylinderScene() {
 
   // The tube is the mirror; a closed twin with caps bounds it for the search, and a lid (not a
   // mirror) keeps the eye out of its inside, which is concave.
-  const std::uint32_t tube = addObject(scene, "mirror-cylinder",
-                                       addMesh(scene, primitives::cylinder("mirror-cylinder", kRadius, kHeight, 128, false)),
-                                       addMaterial(scene, perfectMirror("mirror")));
+  const std::uint32_t tube = addObject(
+      scene, "mirror-cylinder", addMesh(scene, primitives::cylinder("mirror-cylinder", kRadius, kHeight, 128, false)),
+      addMaterial(scene, perfectMirror("mirror")));
   MirrorInfo& info = scene.objects[tube].mirror.emplace();
   info.curvature = MirrorCurvature::Convex;
   info.closed = false;

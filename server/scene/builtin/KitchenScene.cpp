@@ -72,7 +72,8 @@ Mesh tableMesh() {
       sidesAndBottom.insert(sidesAndBottom.end(), slab.indices.begin() + 3 * t, slab.indices.begin() + 3 * t + 3);
   slab.indices = std::move(sidesAndBottom);
   primitives::append(table, slab, placed({0.0f, kTableTop - 0.02f, 0.0f}).matrix());
-  primitives::append(table, primitives::grid("table-surface", 1.6f, 0.9f, 15, 9), placed({0.0f, kTableTop, 0.0f}).matrix());
+  primitives::append(table, primitives::grid("table-surface", 1.6f, 0.9f, 15, 9),
+                     placed({0.0f, kTableTop, 0.0f}).matrix());
   for (const float x : {-0.72f, 0.72f})
     for (const float z : {-0.38f, 0.38f})
       primitives::append(table, primitives::box("table-leg", {0.05f, kTableTop - 0.04f, 0.05f}),

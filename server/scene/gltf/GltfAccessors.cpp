@@ -8,35 +8,23 @@ namespace {
 
 std::string componentTypeName(int componentType) {
   switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-      return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-      return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return "FLOAT";
-    default:
-      return std::to_string(componentType);
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
+    default: return std::to_string(componentType);
   }
 }
 
 std::string typeName(int type) {
   switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return "SCALAR";
-    case TINYGLTF_TYPE_VEC2:
-      return "VEC2";
-    case TINYGLTF_TYPE_VEC3:
-      return "VEC3";
-    case TINYGLTF_TYPE_VEC4:
-      return "VEC4";
-    default:
-      return "type " + std::to_string(type);
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    default: return "type " + std::to_string(type);
   }
 }
 
@@ -45,26 +33,19 @@ std::string typeName(int type) {
 std::size_t componentSize(int componentType) {
   switch (componentType) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return 2;
-    default:
-      return 4;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    default: return 4;
   }
 }
 
 std::size_t componentCount(int type) {
   switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return 1;
-    case TINYGLTF_TYPE_VEC2:
-      return 2;
-    case TINYGLTF_TYPE_VEC3:
-      return 3;
-    default:
-      return 4;
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    default: return 4;
   }
 }
 

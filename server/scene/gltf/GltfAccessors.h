@@ -30,24 +30,18 @@ struct Accessor {
   float component(std::size_t i, std::size_t c) const {
     const unsigned char* at = first + i * stride + c * componentSize(componentType);
     switch (componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return static_cast<float>(at[0]) / 255.0f;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return static_cast<float>(load<std::uint16_t>(at)) / 65535.0f;
-      default:
-        return load<float>(at);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return static_cast<float>(at[0]) / 255.0f;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return static_cast<float>(load<std::uint16_t>(at)) / 65535.0f;
+      default: return load<float>(at);
     }
   }
 
   std::uint32_t index(std::size_t i) const {
     const unsigned char* at = first + i * stride;
     switch (componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return at[0];
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return load<std::uint16_t>(at);
-      default:
-        return load<std::uint32_t>(at);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return at[0];
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<std::uint16_t>(at);
+      default: return load<std::uint32_t>(at);
     }
   }
 

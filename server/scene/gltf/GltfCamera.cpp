@@ -20,7 +20,8 @@ math::Camera framingCamera(const Scene& scene) {
   math::Camera camera;
   camera.fovYDegrees = 45.0f;
   camera.target = centre;
-  camera.eye = centre + radius / std::sin(glm::radians(0.5f * camera.fovYDegrees)) * glm::normalize(glm::vec3(0.5f, 0.4f, 1.0f));
+  camera.eye =
+      centre + radius / std::sin(glm::radians(0.5f * camera.fovYDegrees)) * glm::normalize(glm::vec3(0.5f, 0.4f, 1.0f));
   return camera;
 }
 
@@ -29,27 +30,33 @@ math::Camera framingCamera(const Scene& scene) {
 Status placeCamera(const tinygltf::Model& model, const std::vector<NodeAttachment>& cameras,
                    std::optional<std::size_t> wanted, std::size_t sceneIndex, ImportedGltfScene& imported) {
   if (wanted && *wanted >= model.cameras.size())
-    return Error{"there is no camera " + std::to_string(*wanted) + " (the file has " + std::to_string(model.cameras.size()) + ")"};
+    return Error{"there is no camera " + std::to_string(*wanted) + " (the file has " +
+                 std::to_string(model.cameras.size()) + ")"};
   const auto placed = std::find_if(cameras.begin(), cameras.end(), [&](const NodeAttachment& c) {
     return !wanted || static_cast<std::size_t>(c.index) == *wanted;
   });
   Scene& scene = imported.scene;
   scene.camera = framingCamera(scene);
   if (placed == cameras.end()) {
-    if (wanted) return Error{"camera " + std::to_string(*wanted) + " is on no node of scene " + std::to_string(sceneIndex)};
+    if (wanted)
+      return Error{"camera " + std::to_string(*wanted) + " is on no node of scene " + std::to_string(sceneIndex)};
   } else if (placed->index < 0 || static_cast<std::size_t>(placed->index) >= model.cameras.size()) {
-    return Error{"a node refers to camera " + std::to_string(placed->index) + ", but the file has " + std::to_string(model.cameras.size())};
+    return Error{"a node refers to camera " + std::to_string(placed->index) + ", but the file has " +
+                 std::to_string(model.cameras.size())};
   } else if (model.cameras[static_cast<std::size_t>(placed->index)].type != "perspective") {
-    imported.notes.push_back("camera " + std::to_string(placed->index) + " is not perspective: the view frames the scene instead");
+    imported.notes.push_back("camera " + std::to_string(placed->index) +
+                             " is not perspective: the view frames the scene instead");
   } else {
     const glm::mat4 world(placed->world);
     const double yfov = model.cameras[static_cast<std::size_t>(placed->index)].perspective.yfov;
     math::Camera camera;
     camera.eye = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    camera.target = camera.eye + glm::normalize(glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));  // glTF cameras look down -z
+    camera.target = camera.eye +
+                    glm::normalize(glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));  // glTF cameras look down -z
     camera.up = glm::normalize(glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)));
     camera.fovYDegrees = static_cast<float>(glm::degrees(yfov));
-    if (auto problem = math::cameraProblem(camera)) return Error{"camera " + std::to_string(placed->index) + ": " + *problem};
+    if (auto problem = math::cameraProblem(camera))
+      return Error{"camera " + std::to_string(placed->index) + ": " + *problem};
     scene.camera = camera;
   }
   return {};

@@ -12,9 +12,11 @@ Status addLights(const tinygltf::Model& model, const std::vector<NodeAttachment>
   double brightest = 0.0;
   for (const auto& [index, world] : lights) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size())
-      return Error{"a node refers to light " + std::to_string(index) + ", but the file has " + std::to_string(model.lights.size())};
+      return Error{"a node refers to light " + std::to_string(index) + ", but the file has " +
+                   std::to_string(model.lights.size())};
     const double intensity = model.lights[static_cast<std::size_t>(index)].intensity;
-    if (!std::isfinite(intensity) || intensity < 0.0) return Error{"light " + std::to_string(index) + ": intensity must be finite and >= 0"};
+    if (!std::isfinite(intensity) || intensity < 0.0)
+      return Error{"light " + std::to_string(index) + ": intensity must be finite and >= 0"};
     brightest = std::max(brightest, intensity);
   }
   Scene& scene = imported.scene;
@@ -30,11 +32,13 @@ Status addLights(const tinygltf::Model& model, const std::vector<NodeAttachment>
       light.kind = Light::Kind::Directional;
       light.vector = glm::normalize(glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));  // it shines down -z
     } else {
-      if (source.type == "spot") imported.notes.push_back("light " + std::to_string(index) + " is a spot light: drawn as a point light");
+      if (source.type == "spot")
+        imported.notes.push_back("light " + std::to_string(index) + " is a spot light: drawn as a point light");
       light.kind = Light::Kind::Point;
       light.vector = glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     }
-    if (source.color.size() == 3 && std::all_of(source.color.begin(), source.color.end(), [](double c) { return std::isfinite(c) && c >= 0.0; }))
+    if (source.color.size() == 3 &&
+        std::all_of(source.color.begin(), source.color.end(), [](double c) { return std::isfinite(c) && c >= 0.0; }))
       light.color = glm::vec3(source.color[0], source.color[1], source.color[2]);
     light.intensity = brightest > 0.0 ? static_cast<float>(source.intensity / brightest) : 0.0f;
     scene.lights.push_back(light);

@@ -16,7 +16,8 @@ TextureWrap wrapFrom(int mode) {
 
 // What a glTF material is here: base colour factor (glTF holds linear RGB) and, where the rule makes it
 // a mirror, its reflectivity; its texture is read apart.
-Result<Material> materialFrom(const tinygltf::Material& source, std::size_t index, const GltfMirrorRule& rule, bool& chrome) {
+Result<Material> materialFrom(const tinygltf::Material& source, std::size_t index, const GltfMirrorRule& rule,
+                              bool& chrome) {
   Material material;
   material.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
   const std::string where = "material " + std::to_string(index) + ": ";
@@ -36,7 +37,8 @@ Result<Material> materialFrom(const tinygltf::Material& source, std::size_t inde
   chrome = forced ? named->second : metallic >= rule.minMetallic && roughness <= rule.maxRoughness;
   // A metal reflects its base colour's share of the light; the brightest channel stands for it.
   if (chrome)
-    material.reflectivity = static_cast<float>(forced ? 1.0 : metallic) * std::max({material.baseColor.x, material.baseColor.y, material.baseColor.z});
+    material.reflectivity = static_cast<float>(forced ? 1.0 : metallic) *
+                            std::max({material.baseColor.x, material.baseColor.y, material.baseColor.z});
   material.unlit = source.extensions.count("KHR_materials_unlit") > 0;
   return material;
 }
@@ -45,7 +47,8 @@ Result<Material> materialFrom(const tinygltf::Material& source, std::size_t inde
 
 Status checkMirrorRuleNames(const tinygltf::Model& model, const GltfMirrorRule& rule) {
   for (const auto& [named, mirror] : rule.materials)
-    if (std::none_of(model.materials.begin(), model.materials.end(), [&](const tinygltf::Material& m) { return m.name == named; })) {
+    if (std::none_of(model.materials.begin(), model.materials.end(),
+                     [&](const tinygltf::Material& m) { return m.name == named; })) {
       std::string known;
       for (const tinygltf::Material& m : model.materials) known += (known.empty() ? "" : ", ") + ("\"" + m.name + "\"");
       return Error{"the mirror rule names material \"" + named + "\", which the file does not have (it has " +
@@ -85,9 +88,11 @@ Result<std::optional<std::uint32_t>> MaterialTable::textureOf(const tinygltf::Te
   if (info.index < 0) return std::optional<std::uint32_t>();
   const std::string where = "material " + std::to_string(material) + ": baseColorTexture ";
   if (static_cast<std::size_t>(info.index) >= model_.textures.size())
-    return Error{where + "refers to texture " + std::to_string(info.index) + ", but the file has " + std::to_string(model_.textures.size())};
+    return Error{where + "refers to texture " + std::to_string(info.index) + ", but the file has " +
+                 std::to_string(model_.textures.size())};
   if (info.texCoord != 0) {
-    notes_.push_back(where + "reads TEXCOORD_" + std::to_string(info.texCoord) + "; only TEXCOORD_0 is read, so it is left out");
+    notes_.push_back(where + "reads TEXCOORD_" + std::to_string(info.texCoord) +
+                     "; only TEXCOORD_0 is read, so it is left out");
     return std::optional<std::uint32_t>();
   }
   if (info.extensions.count("KHR_texture_transform") > 0)
@@ -96,18 +101,21 @@ Result<std::optional<std::uint32_t>> MaterialTable::textureOf(const tinygltf::Te
   const auto image = images_.textures.find(texture.source);
   if (image == images_.textures.end())
     return Error{where + "(texture " + std::to_string(info.index) + "): its image " + std::to_string(texture.source) +
-                 " was not read (" + (images_.unread.empty() ? "extensions such as KHR_texture_basisu are not read" : images_.unread) + ")"};
+                 " was not read (" +
+                 (images_.unread.empty() ? "extensions such as KHR_texture_basisu are not read" : images_.unread) +
+                 ")"};
   TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
   if (texture.sampler >= 0) {
     if (static_cast<std::size_t>(texture.sampler) >= model_.samplers.size())
-      return Error{where + "(texture " + std::to_string(info.index) + ") refers to sampler " + std::to_string(texture.sampler) +
-                   ", but the file has " + std::to_string(model_.samplers.size())};
+      return Error{where + "(texture " + std::to_string(info.index) + ") refers to sampler " +
+                   std::to_string(texture.sampler) + ", but the file has " + std::to_string(model_.samplers.size())};
     const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
     wrapU = wrapFrom(sampler.wrapS);
     wrapV = wrapFrom(sampler.wrapT);
   }
   const auto key = std::make_tuple(texture.source, wrapU, wrapV);
-  if (const auto found = textures_.find(key); found != textures_.end()) return std::optional<std::uint32_t>(found->second);
+  if (const auto found = textures_.find(key); found != textures_.end())
+    return std::optional<std::uint32_t>(found->second);
   Texture copy = image->second;
   copy.wrapU = wrapU;
   copy.wrapV = wrapV;

@@ -130,8 +130,8 @@ Result<Mesh> readMesh(const tinygltf::Model& model, std::size_t index, std::stri
   Mesh mesh;
   mesh.name = std::move(name);
   for (std::size_t p = 0; p < source.primitives.size(); ++p) {
-    Result<Mesh> part =
-        readPrimitive(model, source.primitives[p], "primitive " + std::to_string(p) + " of mesh " + std::to_string(index));
+    Result<Mesh> part = readPrimitive(model, source.primitives[p],
+                                      "primitive " + std::to_string(p) + " of mesh " + std::to_string(index));
     if (!part) return Error{part.error()};
     if (mesh.vertices.size() + part->vertices.size() > kMaxVerticesPerScene)
       return Error{"mesh " + std::to_string(index) + " has more than " + std::to_string(kMaxVerticesPerScene) +

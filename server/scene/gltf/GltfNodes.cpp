@@ -23,7 +23,8 @@ Result<glm::dmat4> nodeMatrix(const tinygltf::Node& node, std::size_t index) {
     if (node.matrix.size() != 16) return Error{where + "matrix must have 16 numbers"};
     glm::dmat4 m;
     for (int column = 0; column < 4; ++column)
-      for (int row = 0; row < 4; ++row) m[column][row] = node.matrix[static_cast<std::size_t>(4 * column + row)];  // column-major
+      for (int row = 0; row < 4; ++row)
+        m[column][row] = node.matrix[static_cast<std::size_t>(4 * column + row)];  // column-major
     return m;
   }
   glm::dmat4 m(1.0);
@@ -48,7 +49,8 @@ Result<glm::dmat4> nodeMatrix(const tinygltf::Node& node, std::size_t index) {
 
 std::optional<int> nodeLight(const tinygltf::Node& node) {
   const auto extension = node.extensions.find("KHR_lights_punctual");
-  if (extension == node.extensions.end() || !extension->second.IsObject() || !extension->second.Has("light")) return std::nullopt;
+  if (extension == node.extensions.end() || !extension->second.IsObject() || !extension->second.Has("light"))
+    return std::nullopt;
   const tinygltf::Value& light = extension->second.Get("light");
   return light.IsInt() ? std::optional<int>(light.GetNumberAsInt()) : std::nullopt;
 }
@@ -71,13 +73,15 @@ Status walkNodeTree(const tinygltf::Model& model, std::size_t sceneIndex,
                    ", but the file has " + std::to_string(model.nodes.size())};
     const auto index = static_cast<std::size_t>(next.node);
     if (reached[index])
-      return Error{"node " + std::to_string(index) + " is reached twice: the node tree has a cycle or a node with two parents"};
+      return Error{"node " + std::to_string(index) +
+                   " is reached twice: the node tree has a cycle or a node with two parents"};
     reached[index] = true;
     const tinygltf::Node& node = model.nodes[index];
     Result<glm::dmat4> local = nodeMatrix(node, index);
     if (!local) return Error{local.error()};
     const glm::dmat4 world = next.parent * local.value();
-    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) pending.push_back({*child, world});
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+      pending.push_back({*child, world});
     if (Status visited = visit(index, world); !visited) return visited;
   }
   return {};

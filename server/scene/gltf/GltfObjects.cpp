@@ -34,8 +34,8 @@ Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world) {
   const tinygltf::Node& node = model_.nodes[index];
   if (node.mesh < 0) return {};
   if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
-    return Error{"node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
-                 std::to_string(model_.meshes.size())};
+    return Error{"node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) +
+                 ", but the file has " + std::to_string(model_.meshes.size())};
   if (!(std::abs(glm::determinant(glm::dmat3(world))) > 1e-18)) {
     imported_.notes.push_back("node " + std::to_string(index) + " has a singular transform (a zero scale): not drawn");
     return {};
@@ -47,7 +47,8 @@ Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world) {
                                       "primitive " + std::to_string(p) + " of mesh " + std::to_string(node.mesh));
     if (!part) return Error{part.error()};
     if ((vertices_ += part->vertices.size()) > kMaxVerticesPerScene)
-      return Error{"the scene has more than " + std::to_string(kMaxVerticesPerScene) + " vertices, the limit per scene"};
+      return Error{"the scene has more than " + std::to_string(kMaxVerticesPerScene) +
+                   " vertices, the limit per scene"};
     moveToWorld(part.value(), world);
     part->name = uniqueName(source.primitives.size() > 1 ? base + " #" + std::to_string(p) : base, base);
     if (Status added = addObject(std::move(part.value()), source.primitives[p].material); !added) return added;
@@ -78,8 +79,9 @@ Status ObjectPlacer::addObject(Mesh part, int material) {
     object.mirror->curvature = MirrorCurvature::Mixed;
   } else if (converted->chrome) {
     scene.materials[converted->index].reflectivity = 0.0f;
-    imported_.notes.push_back("'" + object.name +
-                              "' has a mirror material but an open mesh (a mirror needs a closed one): drawn in its colour");
+    imported_.notes.push_back(
+        "'" + object.name +
+        "' has a mirror material but an open mesh (a mirror needs a closed one): drawn in its colour");
   }
   scene.objects.push_back(std::move(object));
   return {};

@@ -17,10 +17,13 @@ namespace {
 // The scene asked for, else the file's default scene, else its first.
 Result<std::size_t> chosenScene(const tinygltf::Model& model, const GltfSceneChoice& choice) {
   if (model.scenes.empty()) return Error{"the file holds no scene (\"scenes\" is empty), so nothing is placed to draw"};
-  const std::size_t chosen = choice.scene ? *choice.scene : model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene) : 0;
+  const std::size_t chosen = choice.scene              ? *choice.scene
+                             : model.defaultScene >= 0 ? static_cast<std::size_t>(model.defaultScene)
+                                                       : 0;
   if (chosen >= model.scenes.size())
-    return Error{"there is no scene " + std::to_string(chosen) + " (the file has " + std::to_string(model.scenes.size()) +
-                 "; pick one of 0.." + std::to_string(model.scenes.size() - 1) + " with --gltf-scene, or \"scene\" in an include)"};
+    return Error{"there is no scene " + std::to_string(chosen) + " (the file has " +
+                 std::to_string(model.scenes.size()) + "; pick one of 0.." + std::to_string(model.scenes.size() - 1) +
+                 " with --gltf-scene, or \"scene\" in an include)"};
   return chosen;
 }
 

@@ -39,8 +39,10 @@ if [[ "$mode" != "--runtime" ]]; then
 fi
 if [[ -z "$mode" ]]; then
   packages+=("${test_packages[@]}")
-  # The browser test drives Chromium from Node >= 20 (its WebSocket); keep a newer Node if one is there.
+  # The browser test drives Chromium over a pipe from any Node >= 18 (Debian 12 has 18); keep one that is there.
   command -v node >/dev/null || packages+=(nodejs)
+  # docker/lint-deploy.sh builds the Kustomize variants; keep a kubectl that is there (another package owns it).
+  command -v kubectl >/dev/null || packages+=(kubernetes-client)
 fi
 
 sudo=""

@@ -1,18 +1,19 @@
 // The browser client in real headless Chromium against a real `specula serve`, driven over the Chrome
-// DevTools Protocol (no npm packages: Node's WebSocket, run with --experimental-websocket).
-//   node --experimental-websocket browser_test.mjs PATH/TO/specula [SCREENSHOT-DIR]
+// DevTools Protocol over its --remote-debugging-pipe (no npm packages; any Node from Debian 12's 18 up).
+//   node browser_test.mjs PATH/TO/specula [SCREENSHOT-DIR]
 // Checks: the page shows the mirror scene (its canvas screenshot against `specula render` of the same
 // camera and time, PSNR bound below), the overlay shows statistics, a scripted drag changes the view,
 // a blank or stale canvas fails, and at several window sizes the statistics panel is one line inside
 // the window, clear of every control, whose details open with one click (screenshots of each to look at).
 import { spawn, spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, writeFileSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { inflateSync } from 'node:zlib';
 
 const specula = process.argv[2];
-const keepDir = process.argv[3];
+const keepDir = process.argv[3];  // optional: the screenshots are kept there
+if (keepDir) mkdirSync(keepDir, { recursive: true });
 const work = mkdtempSync(join(tmpdir(), 'specula-browser-'));
 const kMinPsnr = 30;          // dB: the page's JPEG (quality 85) against the lossless render
 const kMinChangeAfterDrag = 4; // mean absolute difference in grey levels between views before and after the drag
@@ -41,25 +42,32 @@ function startAndWaitFor(command, args, pattern, timeoutMs) {
   });
 }
 
-// A minimal CDP client over the browser's WebSocket, with flattened target sessions.
+// A minimal CDP client over Chromium's --remote-debugging-pipe (it reads commands from its fd 3 and
+// writes replies to its fd 4, each JSON message ending in a NUL byte), with flattened target sessions.
 class Cdp {
-  constructor(url) {
-    this.socket = new WebSocket(url);
+  constructor(child) {
+    this.commands = child.stdio[3];
     this.nextId = 1;
     this.waiting = new Map();
-    this.socket.onmessage = (event) => {
-      const message = JSON.parse(event.data);
-      const waiter = this.waiting.get(message.id);
-      if (!waiter) return;
-      this.waiting.delete(message.id);
-      if (message.error) waiter.reject(new Error(JSON.stringify(message.error)));
-      else waiter.resolve(message.result);
-    };
-    this.opened = new Promise((resolve, reject) => { this.socket.onopen = resolve; this.socket.onerror = reject; });
+    let pending = Buffer.alloc(0);
+    child.stdio[4].on('data', (chunk) => {
+      pending = Buffer.concat([pending, chunk]);
+      for (let end = pending.indexOf(0); end >= 0; end = pending.indexOf(0)) {
+        this.receive(JSON.parse(pending.subarray(0, end).toString('utf8')));
+        pending = pending.subarray(end + 1);
+      }
+    });
+  }
+  receive(message) {
+    const waiter = this.waiting.get(message.id);
+    if (!waiter) return;
+    this.waiting.delete(message.id);
+    if (message.error) waiter.reject(new Error(JSON.stringify(message.error)));
+    else waiter.resolve(message.result);
   }
   send(method, params = {}, sessionId = undefined) {
     const id = this.nextId++;
-    this.socket.send(JSON.stringify({ id, method, params, sessionId }));
+    this.commands.write(`${JSON.stringify({ id, method, params, sessionId })}\0`);
     return new Promise((resolve, reject) => this.waiting.set(id, { resolve, reject }));
   }
 }
@@ -132,12 +140,15 @@ try {
     globalThis.serverPort = r.port; return r;
   }));
   const port = globalThis.serverPort;
-  const started = await startAndWaitFor('chromium', ['--headless=new', '--no-sandbox', '--disable-gpu', '--no-first-run',
-    '--remote-debugging-port=0', `--user-data-dir=${join(work, 'profile')}`, '--window-size=1000,600', 'about:blank'],
-    /DevTools listening on (ws:\/\/\S+)/, 60000);
-  browser = started.child;
-  const cdp = new Cdp(started.match[1]);
-  await cdp.opened;
+  browser = spawn('chromium', ['--headless=new', '--no-sandbox', '--disable-gpu', '--no-first-run', '--remote-debugging-pipe',
+    `--user-data-dir=${join(work, 'profile')}`, '--window-size=1000,600', 'about:blank'],
+  { stdio: ['ignore', 'ignore', 'pipe', 'pipe', 'pipe'] });
+  let browserLog = '';
+  browser.stderr.on('data', (data) => { browserLog += data; });
+  const cdp = new Cdp(browser);
+  const version = await Promise.race([cdp.send('Browser.getVersion'),
+    sleep(60000).then(() => { throw new Error(`Chromium did not answer over its pipe in 60 s:\n${browserLog}`); })]);
+  check('Chromium answers over its DevTools pipe', Boolean(version.product), version.product);
   const { targetId } = await cdp.send('Target.createTarget', { url: 'about:blank' });
   const { sessionId } = await cdp.send('Target.attachToTarget', { targetId, flatten: true });
   const page = (method, params) => cdp.send(method, params, sessionId);

@@ -19,6 +19,18 @@ fails_with() {  # fails_with DESCRIPTION EXPECTED-TEXT ARGS...: specula must exi
     echo "ok - $description"; passes=$((passes + 1))
   fi
 }
+contains() {  # contains TEXT PATTERN...: each grep pattern matches a line of TEXT (captured output)
+  local text="$1" pattern; shift
+  for pattern in "$@"; do
+    grep -q -e "$pattern" <<<"$text" || { printf 'no line matches %s in:\n%s\n' "$pattern" "$text"; return 1; }
+  done
+}
+lacks() {  # lacks TEXT PATTERN: no line of TEXT matches; grep itself failing (status 2) fails too
+  local status
+  grep -q -e "$2" <<<"$1"
+  status=$?
+  [[ $status == 1 ]]
+}
 finish() {
   echo "$passes passed, $failures failed"
   [[ $failures -eq 0 ]]

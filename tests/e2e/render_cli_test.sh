@@ -34,23 +34,26 @@ fails_with "an unwritable output names the file" "could not write '$work/missing
 output=$("$specula" render --scene quad --size 160x120 --ray-cast never --tessellation crack-free --threshold 0 --level 2 --out "$work/q.png" 2>&1)
 check "render prints the tessellation it did" grep -q "tessellation: 2 -> 32 triangles; working per round 2 8 32" <<<"$output"
 output=$("$specula" render --scene quad --size 160x120 --tessellation none --out "$work/q0.png" 2>&1)
-check "--tessellation none runs no tessellation pass" bash -c "! grep -q tessellation <<<'$output'"
+check "--tessellation none runs no tessellation pass" lacks "$output" tessellation
 fails_with "a bad tessellation mode lists the modes" "--tessellation expects none, paper or crack-free" render --tessellation fine
 fails_with "a bad metric lists the metrics" "--metric expects pixels or angle" render --metric px
 fails_with "a negative threshold is refused" "--threshold expects a number in [0, 10000]" render --threshold -1
 fails_with "a level past the bound is refused" "--level expects an integer in [0, 8]" render --level 9
 fails_with "an unknown method lists the methods" "--method expects search, explosion-map, environment-map, raytrace or none" render --method cubemap
 output=$("$specula" render --scene mesh-sphere --size 160x120 --method explosion-map --ray-cast never --out "$work/em.png" 2>&1)
-check "--method explosion-map draws the maps and looks them up" bash -c "grep -q 'explosion-map .* ms, search' <<<\"\$0\" && grep -q '(explosion-map), steps mean 1.9' <<<\"\$0\" && grep -q 'explosion map 256x256: steps are map look-ups' <<<\"\$0\"" "$output"
+check "--method explosion-map draws the maps and looks them up" contains "$output" 'explosion-map .* ms, search' \
+  '(explosion-map), steps mean 1.9' 'explosion map 256x256: steps are map look-ups'
 output=$("$specula" render --scene mesh-sphere --size 160x120 --search explosion-map --explosion-refine on --explosion-map-size 64 --ray-cast never --out "$work/emr.png" 2>&1)
-check "--explosion-refine on climbs from the map's point, with the pyramid for cold starts" bash -c "grep -q 'explosion-map .* ms, gbuffer-pyramid' <<<\"\$0\" && grep -q 'explosion map 64x64, refined' <<<\"\$0\"" "$output"
+check "--explosion-refine on climbs from the map's point, with the pyramid for cold starts" contains "$output" \
+  'explosion-map .* ms, gbuffer-pyramid' 'explosion map 64x64, refined'
 fails_with "--method explosion-map refuses another search" "--method explosion-map places vertices by the maps; it cannot take --search hierarchy" render --method explosion-map --search hierarchy
 fails_with "a map size past the bound is refused" "--explosion-map-size" render --explosion-map-size 8
 fails_with "an unknown placement is refused" "--explosion-placement expects eye-ray or mirror, got 'plane'" render --explosion-placement plane
 output=$("$specula" render --scene cylinder --size 160x120 --ray-cast never --out "$work/cyl.png" 2>&1)
-check "a declared extrusion is solved in 2-D: no pyramid, no steps" bash -c "! grep -q gbuffer-pyramid <<<\"\$0\" && grep -q 'steps mean 0.00 max 0' <<<\"\$0\" && grep -q 'extrusion mirrors (1) solved by the 2-D reduction' <<<\"\$0\"" "$output"
+check "a declared extrusion is solved in 2-D: no pyramid" lacks "$output" gbuffer-pyramid
+check "... and no steps" contains "$output" 'steps mean 0.00 max 0' 'extrusion mirrors (1) solved by the 2-D reduction'
 output=$("$specula" render --scene cylinder --size 160x120 --ray-cast never --extrusions search --out "$work/cyls.png" 2>&1)
-check "--extrusions search searches the cylinder's mesh" bash -c "grep -q gbuffer-pyramid <<<\"\$0\" && grep -q 'extrusion mirrors (1) searched' <<<\"\$0\"" "$output"
+check "--extrusions search searches the cylinder's mesh" contains "$output" gbuffer-pyramid 'extrusion mirrors (1) searched'
 fails_with "unknown extrusion handling is refused" "--extrusions expects solve or search, got 'exact'" render --extrusions exact
 fails_with "unknown virtual pixels are refused" "--virtual-pixels expects exact-hit or as-placed, got 'smooth'" render --virtual-pixels smooth
 fails_with "an unknown search lists the searches" "--search expects crosshair, hierarchy or explosion-map, got 'walk'" render --search walk
@@ -62,7 +65,7 @@ fails_with "a margin past the bound is refused" "--margin expects a number in [0
 fails_with "a bad plan scope names the choices" "--plan expects needed or everything, got 'some'" render --plan some
 output=$("$specula" render --scene checker-sphere --size 96x72 --out "$work/p.png" 2>&1)
 check "render prints the plan per mirror part: a small mirror is ray-cast" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): ray-cast 1 objects (289 vertices); 0 objects" <<<"$output"
-check "... and runs no search" bash -c "! grep -q ' search ' <<<'$output'"
+check "... and runs no search" lacks "$output" ' search '
 output=$("$specula" render --scene checker-sphere --size 96x72 --ray-cast never --out "$work/p0.png" 2>&1)
 check "--ray-cast never searches every mirror" grep -q "plan: mirror 'mirror-sphere' part 0 (convex, ~[0-9]* px): searched 1 objects (289 vertices)" <<<"$output"
 fails_with "an unknown ray-cast rule is refused by name" "--ray-cast expects cheaper, never or always, got 'sometimes'" render --ray-cast sometimes

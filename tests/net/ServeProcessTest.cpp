@@ -63,7 +63,7 @@ std::unique_ptr<client::SpeculaClient> greetedClient(std::uint16_t port, protoco
   return std::move(*client);
 }
 
-TEST(ServeProcess, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWithinASecond) {
+TEST(ServeProcessTiming, StreamsRealFramesAndSigtermClosesEveryClientWithGoingAwayWithinASecond) {
   auto server = serve({"--port", "0", "--scene", "quad"});
   ASSERT_TRUE(server);
   const auto listening = server->waitFor(kListening, 120s);
@@ -121,7 +121,8 @@ TEST(ServeProcess, SearchOptionsBecomeEverySessionsDefaults) {
     if (message->has_welcome()) welcome = message->welcome();
   }
   ASSERT_TRUE(welcome);
-  EXPECT_EQ(welcome->settings().search(), v1::SEARCH_EXPLOSION_MAP_REFINED);
+  EXPECT_EQ(welcome->settings().search(), v1::SEARCH_EXPLOSION_MAP);
+  EXPECT_EQ(welcome->settings().explosion_refine(), v1::SWITCH_ON);
   EXPECT_EQ(welcome->settings().ray_cast(), v1::RAY_CAST_NEVER) << "the search named is what the sessions run";
   EXPECT_EQ(welcome->settings().explosion_map_size(), 128u);
   EXPECT_EQ(welcome->settings().virtual_pixels(), v1::PIXELS_AS_PLACED);
@@ -134,8 +135,7 @@ TEST(ServeProcess, RefusesASampleCountWithoutAPattern) {
   auto server = serve({"--port", "0", "--still-samples", "6"});
   ASSERT_TRUE(server);
   EXPECT_EQ(server->waitExit(30s), std::optional<int>(1));
-  EXPECT_NE(server->output().find("--still-samples: samples per pixel must be 1, 2, 4, 8 or 16, got 6"),
-            std::string::npos)
+  EXPECT_NE(server->output().find("--still-samples expects 1, 2, 4, 8 or 16, got '6'"), std::string::npos)
       << server->output();
 }
 

@@ -405,7 +405,7 @@ TEST(StreamingServerLimits, AClientThatStopsReadingIsDroppedWithItsSkippedFrames
   EXPECT_EQ(rig.server().openWebSockets(), 1u);
 }
 
-TEST(StreamingServerLimits, AThousandConnectDisconnectCyclesLeaveNothingBehind) {
+TEST(StreamingServerTiming, AThousandConnectDisconnectCyclesLeaveNothingBehind) {
   ServerRig rig;
   auto cycle = [&](int count) {
     for (int i = 0; i < count; ++i) {
@@ -432,7 +432,7 @@ TEST(StreamingServerLimits, AThousandConnectDisconnectCyclesLeaveNothingBehind) 
 #endif
 }
 
-TEST(StreamingServerLimits, ShutdownClosesEveryClientWithGoingAwayWithinASecond) {
+TEST(StreamingServerTiming, ShutdownClosesEveryClientWithGoingAwayWithinASecond) {
   ServerRig rig;
   auto a = rig.connect(Encoding::Proto), b = rig.connect(Encoding::Json);
   ASSERT_TRUE(a && b);
@@ -468,7 +468,7 @@ bool serverHangsUpOn(std::uint16_t port, const std::string& bytes, std::chrono::
   return closed;
 }
 
-TEST(StreamingServerLimits, ConnectionsThatNeverFinishTheirRequestAreDroppedAtTheHandshakeDeadline) {
+TEST(StreamingServerTiming, ConnectionsThatNeverFinishTheirRequestAreDroppedAtTheHandshakeDeadline) {
   RigOptions options = defaultRigOptions();
   options.server.handshakeTimeout = 300ms;
   ServerRig rig(options);
@@ -484,7 +484,7 @@ TEST(StreamingServerLimits, ConnectionsThatNeverFinishTheirRequestAreDroppedAtTh
   EXPECT_FALSE(greet(*client).session_id().empty()) << "the server still serves";
 }
 
-TEST(StreamingServerLimits, AClientThatNeverSaysHelloIsClosedAndFreesItsSessionSlot) {
+TEST(StreamingServerTiming, AClientThatNeverSaysHelloIsClosedAndFreesItsSessionSlot) {
   RigOptions options = defaultRigOptions();
   options.hub.maxSessions = 1;
   options.server.firstMessageTimeout = 300ms;
@@ -581,7 +581,7 @@ TEST(StreamingServerHttp, ServesHealthMetricsAndStaticFilesAndNothingOutsideTheW
 namespace specula::testing {
 namespace {
 
-TEST(LoadRun, MeasuresEverySessionAgainstARealServer) {
+TEST(LoadRunTiming, MeasuresEverySessionAgainstARealServer) {
   RigOptions options = defaultRigOptions();
   options.renderer.delay = 5ms;
   ServerRig rig(options);

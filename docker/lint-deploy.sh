@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Lints the deployment beside the images: the Kubernetes manifests (yamllint -s, rules in
 # .yamllint) and the HAProxy front (haproxy -c, warnings fatal) with each backend file, plus a
-# loopback backend of the kind a test harness writes. With kubectl present it also builds both
-# kustomize variants. Needs haproxy and yamllint (docker/install-deps.sh installs both); ctest runs
-# it as e2e.deploy_lint.
+# loopback backend of the kind a test harness writes, and builds both kustomize variants with kubectl
+# (Debian 12's 1.20 and today's alike), checking that every Secret and ConfigMap they reference is
+# one they generate. Needs haproxy, yamllint and kubectl (docker/install-deps.sh installs them);
+# ctest runs it as e2e.deploy_lint.
 # Usage: docker/lint-deploy.sh   (from anywhere)
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,9 +14,10 @@ trap 'rm -rf "$work"' EXIT
 missing=()
 command -v haproxy >/dev/null || missing+=("haproxy (Debian package haproxy)")
 command -v yamllint >/dev/null || missing+=("yamllint (Debian package yamllint)")
+command -v kubectl >/dev/null || missing+=("kubectl (Debian package kubernetes-client)")
 if (( ${#missing[@]} )); then
   for m in "${missing[@]}"; do echo "lint-deploy: $m is not installed" >&2; done
-  echo "lint-deploy: install with docker/install-deps.sh, or apt-get install haproxy yamllint" >&2
+  echo "lint-deploy: install with docker/install-deps.sh, or apt-get install haproxy yamllint kubernetes-client" >&2
   exit 1
 fi
 
@@ -62,21 +64,39 @@ else
   pass "an empty SPECULA_FRONT_BIND is refused with its name"
 fi
 
+# Names the manifests reference (secretKeyRef, configMap volumes) that no object in them has.
+dangling_references() {
+  python3 -c '
+import sys, yaml
+docs = [d for d in yaml.safe_load_all(sys.stdin) if d]
+have = {(d["kind"], d["metadata"]["name"]) for d in docs}
+def walk(node):
+    if isinstance(node, dict):
+        for key, kind in (("secretKeyRef", "Secret"), ("configMap", "ConfigMap"), ("secret", "Secret")):
+            if isinstance(node.get(key), dict):
+                name = node[key].get("name") or node[key].get("secretName")
+                if name and (kind, name) not in have: print(kind, name)
+        for value in node.values(): walk(value)
+    elif isinstance(node, list):
+        for value in node: walk(value)
+walk(docs)'
+}
+
 # kustomize: both variants build (with a throwaway secrets file in a copy of docker/).
-if command -v kubectl >/dev/null; then
-  cp -r "$root/docker" "$work/docker"
-  printf 'SPECULA_TOKEN=lint\nSPECULA_RESUME_SECRET=%s\n' "$(printf 'x%.0s' {1..32})" >"$work/docker/k8s/secrets/specula.env"
-  for variant in docker/k8s docker/k8s/nvidia; do
-    if output=$(kubectl kustomize "$work/$variant" 2>&1); then
-      kinds=$(grep -E '^kind: ' <<<"$output" | sed 's/kind: //' | sort | uniq -c | awk '{ printf "%s%s %s", sep, $1, $2; sep = ", " }')
-      pass "kubectl kustomize $variant: $kinds"
-    else
-      fail "kubectl kustomize $variant" "$output"
-    fi
-  done
-else
-  echo "skip - kubectl kustomize (kubectl not installed)"
-fi
+cp -r "$root/docker" "$work/docker"
+printf 'SPECULA_TOKEN=lint\nSPECULA_RESUME_SECRET=%s\n' "$(printf 'x%.0s' {1..32})" >"$work/docker/k8s/secrets/specula.env"
+kubectl_version=$(kubectl version --client 2>/dev/null | grep -oE 'v[0-9]+\.[0-9]+\.[0-9]+' | head -1)
+for variant in docker/k8s docker/k8s/nvidia; do
+  # stderr apart: today's kubectl warns that the spellings Debian 12's needs are deprecated.
+  if output=$(kubectl kustomize "$work/$variant" 2>"$work/kustomize.err"); then
+    kinds=$(grep -E '^kind: ' <<<"$output" | sed 's/kind: //' | sort | uniq -c | awk '{ printf "%s%s %s", sep, $1, $2; sep = ", " }')
+    pass "kubectl ${kubectl_version:-?} kustomize $variant: $kinds"
+    dangling=$(dangling_references <<<"$output")
+    if [[ -n $dangling ]]; then fail "$variant references what it does not generate" "$dangling"; else pass "$variant: every Secret and ConfigMap referenced is generated"; fi
+  else
+    fail "kubectl kustomize $variant" "$(cat "$work/kustomize.err")"
+  fi
+done
 
 echo "$passes passed, $failures failed"
 [[ $failures -eq 0 ]]

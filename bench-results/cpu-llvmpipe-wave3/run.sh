@@ -1,5 +1,5 @@
 #!/bin/bash
-# The wave-3 figures of the README on llvmpipe: five built-in scenes at 640x480 and 1920x1080, each
+# The wave-3 figures of docs/benchmarks.md on llvmpipe: five built-in scenes at 640x480 and 1920x1080, each
 # with the planner's default frames, every part searched and every part cast (searched / cast),
 # and the planner's last measured prediction. About 10 minutes on 2 cores.
 # Usage: bench-results/cpu-llvmpipe-wave3/run.sh [BUILD_DIR]

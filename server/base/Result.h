@@ -1,6 +1,6 @@
 #pragma once
 // Result<T>: a value or an error message for expected failures (bad scene, no GL, ...).
-// Contract violations assert instead; see DESIGN.md "two error channels".
+// Contract violations assert instead; see docs/development.md, "Two error channels".
 #include <cassert>
 #include <string>
 #include <utility>

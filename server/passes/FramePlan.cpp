@@ -77,7 +77,7 @@ double mirrorDiameterPixels(const math::Bounds& mirror, const math::Camera& came
 
 PartCost predictPartCost(double pixels, const std::vector<const ReflectionSlotRange*>& reflected) {
   // Milliseconds on llvmpipe (2 cores), fitted to `specula bench --ray-cast never` and `--ray-cast
-  // always` on the built-in scenes at 320x240, 640x480 and 1280x720 (README, "Search or ray-cast").
+  // always` on the built-in scenes at 320x240, 640x480 and 1280x720 (docs/frame-plan.md, "The rules").
   // Casting: one draw per reflected object over the part's pixels (fits within 30 %). Searching: a
   // share of the pyramid and the tessellation rounds' readbacks, the virtual objects' raster over
   // the part, and per reflected vertex and triangle the search, tessellation and drawing. How much

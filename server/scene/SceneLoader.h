@@ -1,6 +1,6 @@
 #pragma once
 // Scene files: strict JSON ("specula_scene": 1) naming meshes, materials, objects, lights, animations
-// and a camera. The format is documented in the README, section "Scene files".
+// and a camera. The format is documented in docs/scenes.md, "Scene files".
 #include <filesystem>
 #include <string_view>
 

@@ -370,7 +370,7 @@ struct HardViewCase {
   double bound;    // mirror mismatch against the ray tracer (measured on llvmpipe in the comment)
 };
 
-// The saddle patch seen grazing is not here: 59 % of its pixels are wrong (README, Known limits).
+// The saddle patch seen grazing is not here: 59 % of its pixels are wrong (docs/hard-cases.md, "Known limits").
 const HardViewCase kHardViewCases[] = {
     {0, 0, 0.003},  // torus: 0.14 % of 30 720 mirror pixels
     {0, 1, 0.045},  // 2.9 % of 625

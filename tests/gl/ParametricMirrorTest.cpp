@@ -127,8 +127,8 @@ TEST(ParametricMirror, SearchedTeapotMatchesTheRayTracedPatches) {
   settings.rayCast = passes::RayCastRule::Never;
   const Measured measured = measure(settings);
   EXPECT_GT(measured.points.pixels.size(), 500u);
-  // Measured p99 0.001 px, issue #19's bound 0.5 px. Before the search held outline points on the
-  // thin spout and handle to the exact surface, p90 was 59 px (README, Known limits).
+  // Measured p99 0.001 px, issue #19's bound 0.5 px: the thin spout and handle hold only because the
+  // search takes outline points to the exact surface.
   EXPECT_LE(measured.points.percentile(0.5), 0.01);
   EXPECT_LE(measured.points.percentile(0.99), 0.5);
   // The worst too (measured 0.006 px): points Newton reached past a patch's edge (on its polynomial's

@@ -26,6 +26,7 @@ test_packages=(
   haproxy yamllint      # docker/lint-deploy.sh: the HAProxy front and the Kubernetes manifests
   python3               # tests: the documentation check (links and quoted commands)
   clang-format          # tests: the code follows .clang-format
+  clang libclang-rt-14-dev  # tests: the libFuzzer targets (label fuzz), with ASan and UBSan
 )
 
 mode="${1:-}"

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "base/UrlEncoding.h"
+#include "net/RequestTarget.h"
 #include "net/WebSocketConnection.h"
 
 namespace specula::net {
@@ -18,24 +19,6 @@ constexpr std::uint32_t kMaxHeaderBytes = 8 * 1024;
 
 // Boost 1.74's string_view is its own type.
 std::string_view standard(boost::beast::string_view text) { return {text.data(), text.size()}; }
-
-std::string_view pathOf(std::string_view target) { return target.substr(0, target.find('?')); }
-
-// The value of `name` in the query string, still percent-encoded.
-std::string_view queryValue(std::string_view target, std::string_view name) {
-  const std::size_t question = target.find('?');
-  if (question == std::string_view::npos) return {};
-  std::string_view query = target.substr(question + 1);
-  while (!query.empty()) {
-    const std::size_t amp = query.find('&');
-    const std::string_view pair = query.substr(0, amp);
-    if (pair.size() > name.size() && pair.substr(0, name.size()) == name && pair[name.size()] == '=')
-      return pair.substr(name.size() + 1);
-    if (amp == std::string_view::npos) break;
-    query.remove_prefix(amp + 1);
-  }
-  return {};
-}
 
 // Compares without an early exit, so response time does not reveal how much of a guess was right.
 bool equalInConstantTime(std::string_view given, std::string_view expected) {
@@ -93,7 +76,7 @@ void HttpConnection::doRead() {
 void HttpConnection::onRead(beast::error_code error, std::size_t) {
   if (error) return closeSocket();  // closed, timed out or malformed: nothing worth answering
   http::request<http::empty_body> request = parser_->release();
-  const std::string_view path = pathOf(standard(request.target()));
+  const std::string_view path = targetPath(standard(request.target()));
   if (websocket::is_upgrade(request) && path == "/ws" && authorized(request, options_.token)) {
     if (auto chosen = chooseSubprotocol(standard(request[http::field::sec_websocket_protocol]))) {
       auto ws = std::make_shared<WebSocketConnection>(std::move(stream_), options_, acceptor_, registry_,
@@ -109,7 +92,7 @@ void HttpConnection::onRead(beast::error_code error, std::size_t) {
 }
 
 HttpConnection::Response HttpConnection::respond(const http::request<http::empty_body>& request) const {
-  const std::string_view path = pathOf(standard(request.target()));
+  const std::string_view path = targetPath(standard(request.target()));
   auto answer = [&](http::status status, std::string body, std::string contentType = "text/plain; charset=utf-8") {
     Response response{status, request.version()};
     response.set(http::field::server, "specula");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -15,8 +16,41 @@ Vertex midpointOf(const Vertex& a, const Vertex& b) {
   return {0.5f * (a.position + b.position), length > 0.0f ? normal / length : a.normal, 0.5f * (a.uv + b.uv)};
 }
 
-// One round; false when no edge was long.
-bool splitRound(Mesh& mesh, float maxEdgeLength) {
+// Which edges (v0 → v1, v1 → v2, v2 → v0) of triangle `t` are longer than `maxEdgeLength`.
+std::array<bool, 3> longEdgesOf(const Mesh& mesh, std::size_t t, float maxEdgeLength) {
+  std::array<bool, 3> longEdge{};
+  for (std::size_t e = 0; e < 3; ++e)
+    longEdge[e] = glm::distance(mesh.vertices[mesh.indices[3 * t + e]].position,
+                                mesh.vertices[mesh.indices[3 * t + (e + 1) % 3]].position) > maxEdgeLength;
+  return longEdge;
+}
+
+// The triangles the next round makes: a triangle with k long edges becomes k + 1.
+std::size_t trianglesAfterRound(const Mesh& mesh, float maxEdgeLength) {
+  std::size_t triangles = 0;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const std::array<bool, 3> longEdge = longEdgesOf(mesh, t, maxEdgeLength);
+    triangles += 1 + static_cast<std::size_t>(std::count(longEdge.begin(), longEdge.end(), true));
+  }
+  return triangles;
+}
+
+// Every triangle of the result has edges no longer than `maxEdgeLength`, so at most an equilateral
+// one's area: the mesh's area over that is a floor on the triangles it needs.
+double fewestTrianglesAfterSplitting(const Mesh& mesh, float maxEdgeLength) {
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const glm::dvec3 a = mesh.vertices[mesh.indices[3 * t]].position,
+                     b = mesh.vertices[mesh.indices[3 * t + 1]].position,
+                     c = mesh.vertices[mesh.indices[3 * t + 2]].position;
+    area += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  const double largestTriangle = std::sqrt(3.0) / 4.0 * double(maxEdgeLength) * double(maxEdgeLength);
+  return area / largestTriangle;
+}
+
+// One round: every long edge split once.
+void splitRound(Mesh& mesh, float maxEdgeLength) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
   const auto midpoint = [&](std::uint32_t a, std::uint32_t b) -> std::uint32_t {
     const auto key = std::minmax(a, b);
@@ -26,15 +60,10 @@ bool splitRound(Mesh& mesh, float maxEdgeLength) {
   };
   std::vector<std::uint32_t> indices;
   indices.reserve(mesh.indices.size());
-  bool split = false;
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const std::array<std::uint32_t, 3> v{mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-    std::array<bool, 3> longEdge{};
-    int count = 0;
-    for (int e = 0; e < 3; ++e) {
-      longEdge[e] = glm::distance(mesh.vertices[v[e]].position, mesh.vertices[v[(e + 1) % 3]].position) > maxEdgeLength;
-      count += longEdge[e] ? 1 : 0;
-    }
+    const std::array<bool, 3> longEdge = longEdgesOf(mesh, t, maxEdgeLength);
+    const auto count = std::count(longEdge.begin(), longEdge.end(), true);
     const auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
       indices.insert(indices.end(), {a, b, c});
     };
@@ -42,7 +71,6 @@ bool splitRound(Mesh& mesh, float maxEdgeLength) {
       emit(v[0], v[1], v[2]);
       continue;
     }
-    split = true;
     if (count == 3) {
       const std::uint32_t m01 = midpoint(v[0], v[1]), m12 = midpoint(v[1], v[2]), m20 = midpoint(v[2], v[0]);
       emit(v[0], m01, m20);
@@ -67,16 +95,20 @@ bool splitRound(Mesh& mesh, float maxEdgeLength) {
     }
   }
   mesh.indices = std::move(indices);
-  return split;
 }
 
 }  // namespace
 
 std::optional<Mesh> subdivideLongEdges(const Mesh& mesh, float maxEdgeLength, std::size_t maxTriangles) {
+  // Refused before any work where the area alone says so, and before any round that would pass the
+  // limit, so a hostile max_edge costs neither minutes nor gigabytes.
+  if (fewestTrianglesAfterSplitting(mesh, maxEdgeLength) > double(maxTriangles)) return std::nullopt;
   Mesh result = mesh;
-  // A round at most quadruples the triangles, so memory stays within four times the limit.
-  while (splitRound(result, maxEdgeLength))
-    if (result.triangleCount() > maxTriangles) return std::nullopt;
+  for (std::size_t next = trianglesAfterRound(result, maxEdgeLength); next != result.triangleCount();
+       next = trianglesAfterRound(result, maxEdgeLength)) {
+    if (next > maxTriangles) return std::nullopt;
+    splitRound(result, maxEdgeLength);
+  }
   return result;
 }
 

@@ -57,3 +57,20 @@ TEST(MeshSubdivision, SceneFilesAskForItPerMesh) {
   EXPECT_LE(longestEdge(scene->meshes[0]), 0.5f);
   EXPECT_GE(scene->meshes[0].triangleCount(), 128u);
 }
+
+// The limit is exact: a result of N triangles passes a limit of N and is refused under N - 1, also for
+// slivers of no area, which only the per-round count (not the area floor) can refuse.
+TEST(MeshSubdivision, TheTriangleLimitIsExactForSolidsAndSlivers) {
+  Mesh sliver;
+  sliver.name = "sliver";
+  sliver.vertices = {
+      {{0, 0, 0}, {0, 1, 0}, {0, 0}}, {{1, 0, 0}, {0, 1, 0}, {1, 0}}, {{0.5f, 1e-9f, 0}, {0, 1, 0}, {0, 1}}};
+  sliver.indices = {0, 1, 2};
+  for (const Mesh& mesh : {primitives::box("b", {1.6f, 0.04f, 0.9f}), sliver}) {
+    const auto split = subdivideLongEdges(mesh, 0.05f, 1u << 20);
+    ASSERT_TRUE(split) << mesh.name;
+    const std::size_t needed = split->triangleCount();
+    EXPECT_TRUE(subdivideLongEdges(mesh, 0.05f, needed)) << mesh.name;
+    EXPECT_FALSE(subdivideLongEdges(mesh, 0.05f, needed - 1)) << mesh.name;
+  }
+}

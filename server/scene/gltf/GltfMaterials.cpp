@@ -46,7 +46,8 @@ Result<Material> materialFrom(const tinygltf::Material& source, std::size_t inde
 }  // namespace
 
 Status checkMirrorRuleNames(const tinygltf::Model& model, const GltfMirrorRule& rule) {
-  for (const auto& [named, mirror] : rule.materials)
+  for (const auto& entry : rule.materials) {
+    const std::string& named = entry.first;  // not a structured binding: clang 14 cannot capture one in a lambda
     if (std::none_of(model.materials.begin(), model.materials.end(),
                      [&](const tinygltf::Material& m) { return m.name == named; })) {
       std::string known;
@@ -54,6 +55,7 @@ Status checkMirrorRuleNames(const tinygltf::Model& model, const GltfMirrorRule& 
       return Error{"the mirror rule names material \"" + named + "\", which the file does not have (it has " +
                    (known.empty() ? std::string("none") : known) + ")"};
     }
+  }
   return {};
 }
 

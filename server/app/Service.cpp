@@ -1,6 +1,8 @@
 #include "app/Service.h"
 
 #include "app/GlSetup.h"
+#include "gl/GlObject.h"
+#include "net/Histogram.h"
 #include "session/GlFrameRenderer.h"
 
 namespace specula::app {
@@ -17,7 +19,13 @@ Result<std::unique_ptr<Service>> Service::start(ServiceConfig config) {
   auto hub = session::SessionHub::start(config.scene, config.hub, rendererFactory);
   if (!hub) return Error{hub.error()};
   service->hub_ = std::move(*hub);
-  config.server.metricsText = [hub = service->hub_.get()] { return hub->prometheusText(); };
+  config.server.metricsText = [hub = service->hub_.get()] {
+    std::string text = hub->prometheusText();
+    net::appendPrometheusSample(text, "specula_gl_objects", "gauge",
+                                "GL buffers, textures, framebuffers, vertex arrays and queries alive, all contexts.",
+                                static_cast<double>(gl::glObjectsLive.load(std::memory_order_relaxed)));
+    return text;
+  };
   config.server.notReady = [hub = service->hub_.get()] { return hub->notReady(); };
   auto server = net::HttpServer::start(config.server, *service->hub_);
   if (!server) return Error{server.error()};

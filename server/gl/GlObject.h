@@ -14,6 +14,9 @@ enum class GlObjectType { Buffer, Texture, Framebuffer, VertexArray, Query };
 // GL object names created so far, of every type, on every thread: tests check that frames of one
 // size create none.
 inline std::atomic<std::uint64_t> glObjectsCreated{0};
+// GL object names owned now (created and not yet deleted), of every type, on every thread: the
+// service's specula_gl_objects gauge, which `specula bench soak` watches for leaks.
+inline std::atomic<std::int64_t> glObjectsLive{0};
 
 template <GlObjectType Type>
 class GlObject {
@@ -25,6 +28,7 @@ class GlObject {
     if constexpr (Type == GlObjectType::Framebuffer) gl.GenFramebuffers(1, &id_);
     if constexpr (Type == GlObjectType::VertexArray) gl.GenVertexArrays(1, &id_);
     if constexpr (Type == GlObjectType::Query) gl.GenQueries(1, &id_);
+    if (id_ != 0) glObjectsLive.fetch_add(1, std::memory_order_relaxed);
   }
   ~GlObject() { reset(); }
   GlObject(GlObject&& other) noexcept : gl_(other.gl_), id_(std::exchange(other.id_, 0)) {}
@@ -49,6 +53,7 @@ class GlObject {
     if constexpr (Type == GlObjectType::Framebuffer) gl_->DeleteFramebuffers(1, &id_);
     if constexpr (Type == GlObjectType::VertexArray) gl_->DeleteVertexArrays(1, &id_);
     if constexpr (Type == GlObjectType::Query) gl_->DeleteQueries(1, &id_);
+    glObjectsLive.fetch_sub(1, std::memory_order_relaxed);
     id_ = 0;
   }
 

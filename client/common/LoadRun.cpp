@@ -50,6 +50,13 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
   double renderSum = 0.0, encodeSum = 0.0, serverSum = 0.0;
   std::optional<Clock::time_point> lastFrame;
   while (Clock::now() < end) {
+    if (options.script) {
+      const double sinceRunBegan = std::chrono::duration<double>(Clock::now() - (measureFrom - options.warmup)).count();
+      if (Status acted = options.script(index, sinceRunBegan, client); !acted) {
+        result.error = acted.error();
+        break;
+      }
+    }
     if (start && Clock::now() >= nextInput) {
       const double seconds = std::chrono::duration<double>(Clock::now() - began).count();
       OrbitCamera orbit = *start;
@@ -71,7 +78,10 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
       }
       continue;  // timed out: time for the next input
     }
-    if (message->has_welcome()) start = orbitFor(message->welcome().scene(), index, options.sessions);
+    if (message->has_welcome()) {
+      start = orbitFor(message->welcome().scene(), index, options.sessions);
+      result.resumed += message->welcome().resumed() ? 1 : 0;
+    }
     if (message->has_error() && message->error().code() == v1::Error::RESUME_REFUSED) {
       ++result.resumesRefused;  // a fresh session after a reconnect: the orbit goes on
       continue;
@@ -174,6 +184,7 @@ std::string loadReportJson(const LoadReport& report) {
                         {"server_ms_mean", s.serverMsMean},
                         {"reconnects", s.reconnects},
                         {"resumes_refused", s.resumesRefused},
+                        {"resumed", s.resumed},
                         {"longest_gap_ms", s.longestGapMs},
                         {"error", s.error}});
   const LoadOptions& o = report.options;

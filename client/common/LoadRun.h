@@ -25,6 +25,9 @@ struct LoadOptions {
   ReconnectPolicy reconnect;  // a lost session reconnects and resumes (ResumingClient)
   // Called about once a second from the calling thread with the seconds done and frames so far.
   std::function<void(double seconds, std::uint64_t frames)> progress;
+  // Called by each session before each read, with the seconds since the run began (warm-up included):
+  // may send, pause or drop the connection, as `specula bench soak`'s clients do. An error ends the session.
+  std::function<Status(int session, double seconds, ResumingClient& client)> script;
 };
 
 struct SessionLoad {
@@ -34,6 +37,7 @@ struct SessionLoad {
   double renderMsMean = 0.0, encodeMsMean = 0.0, serverMsMean = 0.0;
   int reconnects = 0;         // connections lost and won back
   int resumesRefused = 0;     // of those, the ones the server could not resume
+  int resumed = 0;            // welcomes that brought the session back from its resume token
   double longestGapMs = 0.0;  // between two frames while measuring: what a lost connection cost
   std::string error;          // empty when the session ran to the end
 };

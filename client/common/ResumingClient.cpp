@@ -96,6 +96,11 @@ Result<v1::ServerMessage> ResumingClient::receive(std::chrono::milliseconds time
   }
 }
 
+void ResumingClient::drop() {
+  if (client_) client_->abort();
+  client_.reset();
+}
+
 void ResumingClient::close() {
   if (client_) client_->close();
   if (!final_) final_ = CloseInfo{1000, "closed by the client"};

@@ -46,6 +46,8 @@ class ResumingClient {
   Result<v1::ServerMessage> receive(std::chrono::milliseconds timeout);
   std::optional<CloseInfo> closeInfo() const { return final_; }
   void close();
+  // Drops the connection abruptly (SpeculaClient::abort); the next send or receive reconnects and resumes.
+  void drop();
 
   const std::string& resumeToken() const { return token_; }
   int reconnects() const { return reconnects_; }  // successful ones

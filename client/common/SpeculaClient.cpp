@@ -186,4 +186,14 @@ void SpeculaClient::close() {
   s.io.poll();  // let cancelled handlers run while their captures are alive
 }
 
+void SpeculaClient::abort() {
+  State& s = *state_;
+  if (s.closed) return;
+  s.closed = CloseInfo{0, "aborted by the client"};
+  beast::error_code ignored;
+  beast::get_lowest_layer(s.ws).socket().close(ignored);
+  s.io.restart();
+  s.io.poll();
+}
+
 }  // namespace specula::client

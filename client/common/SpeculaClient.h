@@ -44,6 +44,9 @@ class SpeculaClient {
   std::optional<CloseInfo> closeInfo() const;
   // Normal close handshake (1000); safe to call twice.
   void close();
+  // Closes the socket with no close handshake and unread data left, as a crashed client or a lost
+  // network does (the server sees a reset, perhaps mid-frame).
+  void abort();
 
  private:
   struct State;

@@ -12,6 +12,7 @@ int runBench(std::span<const std::string> arguments) {
           {"tessellation", "tessellation settings against the exact reflection", runTessellationBench},
           {"accuracy", "every method and setting against the ray tracer: error against time", runAccuracyBench},
           {"serve", "streaming: sessions x sizes against real `specula serve` processes", runServeBench},
+          {"soak", "minutes of real sessions and misbehaving clients: memory, fds, GL objects, counters", runSoakBench},
       },
       arguments, runSceneBench);
 }

@@ -1,0 +1,53 @@
+#pragma once
+// The clients of `specula bench soak`, as a LoadOptions::script: each session plays one role in turn
+// (steady, slow reader, reader that stops, client that vanishes, settings changer), and every session
+// joins the reconnect storms, when all of them drop their connections at once and resume.
+#include <array>
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "ResumingClient.h"
+#include "base/Result.h"
+
+namespace specula::app {
+
+enum class SoakRole { Steady, SlowReader, Stopper, Vanisher, SettingsChanger };
+constexpr std::array kSoakRoles = {SoakRole::Steady, SoakRole::SlowReader, SoakRole::Stopper, SoakRole::Vanisher,
+                                   SoakRole::SettingsChanger};
+std::string roleName(SoakRole role);
+
+struct SoakTiming {
+  double runSeconds = 600.0;
+  int storms = 4;                                         // evenly spread: at 1/5, 2/5, 3/5 and 4/5 of the run
+  double slowReadPauseSeconds = 0.25;                     // a slow reader's wait before each read
+  double stopEverySeconds = 30.0, stopForSeconds = 15.0;  // long enough to fill the socket buffers and pass
+                                                          // the server's 5 s write deadline
+  double vanishEverySeconds = 10.0;
+  double settingsEverySeconds = 3.0;
+};
+
+struct SoakActions {  // what the clients did, for the report
+  int storms = 0, drops = 0, stops = 0, settingsSent = 0;
+};
+
+class SoakClients {
+ public:
+  SoakClients(int sessions, SoakTiming timing);
+  static SoakRole role(int session) { return kSoakRoles[static_cast<std::size_t>(session) % kSoakRoles.size()]; }
+  // LoadOptions::script: called by session `session`'s thread only.
+  Status act(int session, double seconds, client::ResumingClient& client);
+  SoakActions actions() const;  // once the sessions' threads have ended
+
+ private:
+  struct SessionState {
+    double nextEvent = 0.0;  // the role's next stop, vanish or settings change
+    int stormsJoined = 0;
+    std::size_t settingsIndex = 0;
+  };
+  SoakTiming timing_;
+  std::vector<SessionState> states_;
+  std::atomic<int> drops_{0}, stops_{0}, settingsSent_{0};
+};
+
+}  // namespace specula::app

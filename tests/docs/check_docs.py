@@ -22,7 +22,7 @@ FENCE = re.compile(r"^ {0,3}(```|~~~).*?^ {0,3}\1[ \t]*$", re.MULTILINE | re.DOT
 INLINE_CODE = re.compile(r"`[^`\n]*`")
 LINK = re.compile(r"!?\[(?:[^\[\]]|\[[^\[\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 HEADING = re.compile(r"^ {0,3}#{1,6}[ \t]+(.+?)[ \t#]*$", re.MULTILINE)
-SUBCOMMANDS = {"specula": {"serve": {}, "render": {}, "scenes": {}, "bench": {"tessellation": {}, "accuracy": {}, "serve": {}}}}
+SUBCOMMANDS = {"specula": {"serve": {}, "render": {}, "scenes": {}, "bench": {"tessellation": {}, "accuracy": {}, "serve": {}, "soak": {}}}}
 PROGRAMS = ("specula", "specula-view", "specula-path", "specula-load")
 
 

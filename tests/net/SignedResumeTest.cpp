@@ -139,9 +139,12 @@ TEST(SignedResume, AnotherInstanceWithTheSecretResumesTheSessionFromItsLatestFra
   settings.mutable_settings()->set_search(v1::SEARCH_HIERARCHY);
   settings.mutable_settings()->set_still_samples(2);
   ASSERT_TRUE(client->send(settings).ok());
-  auto frame = receiveUntil(
-      *client, [](const v1::ServerMessage& m) { return m.has_frame() && m.frame().input_sequence() == 7; });
+  // The first frame after the settings change echoes them; messages apply in order, so the camera is in too.
+  auto frame = receiveUntil(*client, [](const v1::ServerMessage& m) {
+    return m.has_frame() && m.frame().has_settings() && m.frame().settings().search() == v1::SEARCH_HIERARCHY;
+  });
   ASSERT_TRUE(frame);
+  EXPECT_EQ(frame->frame().input_sequence(), 7u);
   const std::string token = frame->frame().resume_token();
   ASSERT_FALSE(token.empty()) << "with a secret every frame carries the state's token";
   first.stop();  // the instance is gone

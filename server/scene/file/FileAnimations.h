@@ -7,8 +7,8 @@
 
 namespace specula::scene::file {
 
-// An animation of the object `names` finds for its "target", or of the camera ("camera"); keyframes
-// leave out what they do not set, which keeps its rest value in `scene`.
+// An animation of the object its "target" names (found in `names`) or of the camera ("camera"); what a
+// path's key leaves out keeps its rest value in `scene`.
 Animation readAnimation(const JsonNode& node, const Names& names, const Scene& scene);
 
 }  // namespace specula::scene::file

@@ -18,8 +18,7 @@ namespace specula::scene::file {
 
 namespace fs = std::filesystem;
 
-void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Names& names,
-                 TextureFiles& textures) {
+void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Names& names, TextureFiles& textures) {
   node.expectObject({"name", "file", "scene", "mirror_rule", "translation", "rotation", "scale"});
   const JsonNode nameNode = node.at("name");
   const std::string& group = nameNode.string();

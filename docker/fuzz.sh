@@ -3,7 +3,7 @@
 # growing corpus in build/fuzz/corpus/ between runs. Prints per target executions per second, total
 # executions and coverage edges; crashes, leaks and hangs are saved as build/fuzz/findings/<target>/
 # crash-<sha1> (leak-, timeout-, oom-): add them to tests/fuzz/regressions/<target>/ once fixed.
-# usage: docker/fuzz.sh SECONDS_PER_TARGET [TARGET...]
+# usage: docker/fuzz.sh SECONDS_PER_TARGET [TARGET...]   (FUZZ_RUNS=N: also stop each after N executions)
 set -euo pipefail
 (( $# >= 1 )) || { echo "usage: $0 SECONDS_PER_TARGET [TARGET...]" >&2; exit 2; }
 cd "$(dirname "$0")/.."

@@ -4,6 +4,8 @@
 # coverage edges reached (cov:). Inputs that crash, leak or hang are saved as BUILD_DIR/findings/<target>/;
 # new corpus inputs collect in BUILD_DIR/corpus/<target>/. Fails when any target has a finding.
 # usage: run_fuzzers.sh BUILD_DIR SECONDS [TARGET...]   (targets: every one when none are named)
+# FUZZ_RUNS=N in the environment stops each target after N executions too (SECONDS is then its cap);
+# FUZZ_SEED=N fixes libFuzzer's random seed, so a run explores the same inputs each time (ctest's does).
 set -uo pipefail
 (( $# >= 2 )) || { echo "usage: $0 BUILD_DIR SECONDS [TARGET...]" >&2; exit 2; }
 build=$(realpath -m "$1")
@@ -33,12 +35,14 @@ printf '%-14s %10s %14s %8s  %s\n' target exec/s executions edges findings >"$bu
 for target in "${targets[@]}"; do
   corpus="$build/corpus/$target" findings="$build/findings/$target" log="$build/logs/$target.log"
   mkdir -p "$corpus" "$findings" "$(dirname "$log")"
-  dictionary=()
+  dictionary=() runs=()
+  [[ -n ${FUZZ_RUNS:-} ]] && runs=(-runs="$FUZZ_RUNS")
+  [[ -n ${FUZZ_SEED:-} ]] && runs+=(-seed="$FUZZ_SEED")
   [[ -f "$here/$target.dict" ]] && dictionary=(-dict="$here/$target.dict")
   echo "fuzzing $target for $seconds s"
   # -timeout: a single input running 25 s is a hang; -rss_limit_mb: the decoders' own bounds stay well under it.
   "$build/fuzz/${target}_fuzzer" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 -print_final_stats=1 \
-    -artifact_prefix="$findings/" "${dictionary[@]}" "$corpus" "$here/corpus/$target" >"$log" 2>&1
+    -artifact_prefix="$findings/" "${dictionary[@]}" "${runs[@]}" "$corpus" "$here/corpus/$target" >"$log" 2>&1
   status=$?
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")

@@ -192,10 +192,11 @@ MirrorParts MirrorParts::of(const Mesh& mesh, MirrorCurvature curvature) {
     return true;
   };
   const auto byArea = [&] {
-    std::vector<std::uint32_t> parts;
-    for (const auto& entry : partArea) parts.push_back(entry.first);
-    std::sort(parts.begin(), parts.end(), [&](std::uint32_t a, std::uint32_t b) { return partArea[a] < partArea[b]; });
-    return parts;
+    std::vector<std::uint32_t> smallestFirst;
+    for (const auto& entry : partArea) smallestFirst.push_back(entry.first);
+    std::sort(smallestFirst.begin(), smallestFirst.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return partArea[a] < partArea[b]; });
+    return smallestFirst;
   };
   for (bool merged = true; merged && partArea.size() > 1;) {
     merged = false;

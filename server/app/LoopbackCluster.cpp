@@ -81,13 +81,10 @@ Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackCl
     return Error{"HAProxy's configuration " + options.haproxyConfig.string() +
                  " is missing; run from the repository root or name it"};
   std::unique_ptr<LoopbackCluster> cluster(new LoopbackCluster());
-  std::string folder = (fs::temp_directory_path() / "specula-cluster-XXXXXX").string();
-  if (!mkdtemp(folder.data()))
-    return Error{"cannot create a folder for the cluster's files under " + fs::temp_directory_path().string()};
-  cluster->folder_ = folder;
-  const fs::path secret = cluster->folder_ / "resume.secret";
-  std::ofstream(secret) << options.resumeSecret;
-  fs::permissions(secret, fs::perms::owner_read | fs::perms::owner_write);
+  auto folder = PrivateFolder::create("specula-cluster-");
+  if (!folder) return Error{"the cluster's files: " + folder.error()};
+  cluster->folder_ = std::move(*folder);
+  const fs::path secret = cluster->folder_.writeSecret("resume.secret", options.resumeSecret);
 
   for (int i = 0; i < options.instances; ++i) {
     std::vector<std::string> arguments = {options.specula,
@@ -115,7 +112,7 @@ Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackCl
   std::string backend = "# Written by specula's LoopbackCluster for this run.\nbackend specula from specula\n";
   for (std::size_t i = 0; i < cluster->instances_.size(); ++i)
     backend += "    server s" + std::to_string(i) + " 127.0.0.1:" + std::to_string(cluster->instances_[i].port) + "\n";
-  const fs::path backendFile = cluster->folder_ / "backend.cfg";
+  const fs::path backendFile = cluster->folder_.path() / "backend.cfg";
   std::ofstream(backendFile) << backend;
   auto front = freePort();
   if (!front) return Error{front.error()};
@@ -123,7 +120,7 @@ Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackCl
   auto process =
       ChildProcess::start({*haproxy, "-db", "-f", options.haproxyConfig.string(), "-f", backendFile.string()},
                           {{"SPECULA_FRONT_BIND", "127.0.0.1:" + std::to_string(*front)},
-                           {"SPECULA_HAPROXY_SOCKET", (cluster->folder_ / "admin.sock").string()}});
+                           {"SPECULA_HAPROXY_SOCKET", (cluster->folder_.path() / "admin.sock").string()}});
   if (!process) return Error{"HAProxy: " + process.error()};
   cluster->haproxy_ = std::move(*process);
   if (Status up = cluster->waitForUp(cluster->instances_.size(), 15s); !up)
@@ -134,8 +131,6 @@ Result<std::unique_ptr<LoopbackCluster>> LoopbackCluster::start(const LoopbackCl
 LoopbackCluster::~LoopbackCluster() {
   haproxy_.reset();
   instances_.clear();
-  std::error_code ignored;
-  if (!folder_.empty()) fs::remove_all(folder_, ignored);
 }
 
 void LoopbackCluster::kill(std::size_t i) {
@@ -158,7 +153,7 @@ Result<std::string> LoopbackCluster::haproxyCommand(const std::string& command) 
   asio::io_context io;
   asio::local::stream_protocol::socket socket(io);
   boost::system::error_code error;
-  socket.connect((folder_ / "admin.sock").string(), error);
+  socket.connect((folder_.path() / "admin.sock").string(), error);
   if (error) return Error{"HAProxy's runtime API: " + error.message()};
   asio::write(socket, asio::buffer(command + "\n"), error);
   if (error) return Error{"HAProxy's runtime API: " + error.message()};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/ChildProcess.h"
+#include "app/PrivateFolder.h"
 #include "base/Result.h"
 
 namespace specula::app {
@@ -55,7 +56,7 @@ class LoopbackCluster {
     std::uint16_t port = 0;
   };
   LoopbackCluster() = default;
-  std::filesystem::path folder_;  // secret, backend file, admin socket
+  PrivateFolder folder_;  // secret, backend file, admin socket; removed after the processes stop
   std::vector<Instance> instances_;
   std::unique_ptr<ChildProcess> haproxy_;
   std::uint16_t frontPort_ = 0;

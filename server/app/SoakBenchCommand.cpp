@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <thread>
 #include <tuple>
@@ -17,6 +16,7 @@
 #include "app/ChildProcess.h"
 #include "app/GlSetup.h"
 #include "app/OutputFiles.h"
+#include "app/PrivateFolder.h"
 #include "app/SoakReport.h"
 #include "base/CommandLine.h"
 #include "session/ResumeStore.h"
@@ -61,15 +61,6 @@ CommandLine soakBenchOptions() {
 
 constexpr CommandFailure failSoak{"specula bench soak"};
 
-// A private folder for the resume secret, removed with its files.
-struct SecretFolder {
-  fs::path path;
-  ~SecretFolder() {
-    std::error_code ignored;
-    if (!path.empty()) fs::remove_all(path, ignored);
-  }
-};
-
 // The server's sessions once they are all gone (or `timeout` passed): the sample taken then.
 Result<ServerSample> sampleWhenClosed(pid_t pid, std::uint16_t port, double seconds) {
   Result<ServerSample> sample = sampleServer(pid, port);
@@ -113,13 +104,10 @@ int runSoakBench(std::span<const std::string> arguments) {
   for (const char* output : {"csv", "json"})
     if (Status status = checkWritable(options.text(output)); !status) return failSoak(status.error());
 
-  SecretFolder secret{fs::temp_directory_path() / "specula-soak-XXXXXX"};
-  std::string folder = secret.path.string();
-  if (!mkdtemp(folder.data())) return failSoak("cannot create a folder under " + fs::temp_directory_path().string());
-  secret.path = folder;
-  const fs::path secretFile = secret.path / "resume.secret";
-  std::ofstream(secretFile) << session::randomToken() + session::randomToken();  // 64 hex digits, this run only
-  fs::permissions(secretFile, fs::perms::owner_read | fs::perms::owner_write);
+  auto folder = PrivateFolder::create("specula-soak-");
+  if (!folder) return failSoak(folder.error());
+  // 64 hex digits, this run only.
+  const fs::path secretFile = folder->writeSecret("resume.secret", session::randomToken() + session::randomToken());
 
   std::error_code ignored;
   auto server = ChildProcess::start({fs::read_symlink("/proc/self/exe", ignored).string(), "serve", "--port", "0",

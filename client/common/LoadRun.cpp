@@ -35,7 +35,9 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
   hello.set_protocol_version(1);
   hello.set_width(static_cast<std::uint32_t>(options.width));
   hello.set_height(static_cast<std::uint32_t>(options.height));
-  auto connected = ResumingClient::connect(options.address, options.encoding, hello, options.reconnect);
+  auto connected =
+      ResumingClient::connect(options.address, options.encoding, hello,
+                              options.sessionReconnect ? options.sessionReconnect(index) : options.reconnect);
   if (!connected) {
     result.error = connected.error();
     return result;

@@ -23,6 +23,8 @@ struct LoadOptions {
   double inputHz = 60.0;                     // camera updates per second per session
   double orbitDegreesPerSecond = 30.0;
   ReconnectPolicy reconnect;  // a lost session reconnects and resumes (ResumingClient)
+  // When set, session N's policy instead (the soak's stopping readers connect through a thin pipe).
+  std::function<ReconnectPolicy(int session)> sessionReconnect;
   // Called about once a second from the calling thread with the seconds done and frames so far.
   std::function<void(double seconds, std::uint64_t frames)> progress;
   // Called by each session before each read, with the seconds since the run began (warm-up included):

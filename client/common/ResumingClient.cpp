@@ -20,7 +20,7 @@ Result<std::unique_ptr<ResumingClient>> ResumingClient::connect(const ServerAddr
 }
 
 Status ResumingClient::open() {
-  auto connected = SpeculaClient::connect(address_, encoding_, policy_.connectTimeout);
+  auto connected = SpeculaClient::connect(address_, encoding_, policy_.connectTimeout, policy_.receiveBufferBytes);
   if (!connected) return Error{connected.error()};
   client_ = std::move(*connected);
   v1::ClientMessage hello;

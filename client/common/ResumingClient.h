@@ -19,6 +19,7 @@ struct ReconnectPolicy {
   std::chrono::milliseconds firstDelay{200};  // before the first try; doubled each try
   std::chrono::milliseconds maxDelay{5000};
   std::chrono::milliseconds connectTimeout{3000};  // one try: TCP, upgrade, welcome
+  int receiveBufferBytes = 0;                      // each connection's (SpeculaClient::connect); 0: the system's
 };
 
 // Close codes after which a reconnect can succeed: the connection dropped (0, 1006), the server went

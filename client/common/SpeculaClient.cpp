@@ -2,7 +2,6 @@
 
 #include "base/UrlEncoding.h"
 
-#include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
@@ -80,7 +79,8 @@ SpeculaClient::SpeculaClient(std::unique_ptr<State> state) : state_(std::move(st
 SpeculaClient::~SpeculaClient() { close(); }
 
 Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddress& address, protocol::Encoding encoding,
-                                                              std::chrono::milliseconds timeout) {
+                                                              std::chrono::milliseconds timeout,
+                                                              int receiveBufferBytes) {
   auto state = std::make_unique<State>();
   state->encoding = encoding;
   const std::string where = address.host + ":" + std::to_string(address.port);
@@ -88,13 +88,27 @@ Result<std::unique_ptr<SpeculaClient>> SpeculaClient::connect(const ServerAddres
   beast::error_code error;
   const auto endpoints = resolver.resolve(address.host, std::to_string(address.port), error);
   if (error) return Error{"cannot resolve " + address.host + ": " + error.message()};
+  // One endpoint at a time, so the socket's options are set before its SYN (the window follows the buffer).
+  beast::tcp_stream& stream = beast::get_lowest_layer(state->ws);
+  stream.expires_after(timeout);
   bool connected = false;
-  beast::get_lowest_layer(state->ws).expires_after(timeout);
-  beast::get_lowest_layer(state->ws).async_connect(endpoints, [&](beast::error_code e, const tcp::endpoint&) {
-    error = e;
-    connected = true;
-  });
-  state->runUntil([&] { return connected; }, timeout + std::chrono::milliseconds(100));
+  error = asio::error::host_not_found;
+  for (const auto& entry : endpoints) {
+    const tcp::endpoint endpoint = entry.endpoint();
+    connected = false;
+    beast::error_code ignored;
+    stream.socket().close(ignored);
+    stream.socket().open(endpoint.protocol(), error);
+    if (!error && receiveBufferBytes > 0)
+      stream.socket().set_option(asio::socket_base::receive_buffer_size(receiveBufferBytes), error);
+    if (error) break;
+    stream.async_connect(endpoint, [&](beast::error_code e) {
+      error = e;
+      connected = true;
+    });
+    state->runUntil([&] { return connected; }, timeout + std::chrono::milliseconds(100));
+    if (!connected || !error || error == beast::error::timeout) break;
+  }
   if (!connected || error)
     return Error{"cannot connect to " + where + ": " + (connected ? error.message() : "timed out") +
                  " (is `specula serve` running there?)"};

@@ -31,8 +31,11 @@ class SpeculaClient {
  public:
   // TCP connect and WebSocket upgrade on /ws with the encoding's subprotocol. Errors name the
   // address and what went wrong (refused, timed out, HTTP status of a declined upgrade).
+  // receiveBufferBytes > 0 fixes the socket's receive buffer (and so the window the server may fill):
+  // a thin pipe whose reader stops fills it within a frame, as a phone's would.
   static Result<std::unique_ptr<SpeculaClient>> connect(const ServerAddress& address, protocol::Encoding encoding,
-                                                        std::chrono::milliseconds timeout = std::chrono::seconds(5));
+                                                        std::chrono::milliseconds timeout = std::chrono::seconds(5),
+                                                        int receiveBufferBytes = 0);
   ~SpeculaClient();
 
   Status send(const v1::ClientMessage& message);

@@ -49,6 +49,7 @@ Result<ServerSample> sampleServer(pid_t pid, std::uint16_t port) {
       {"specula_sessions", &sample.sessions},
       {"specula_frames_sent_total", &sample.framesSent},
       {"specula_frames_skipped_total", &sample.framesSkipped},
+      {"specula_write_timeouts_total", &sample.writeTimeouts},
       {"specula_sessions_opened_total", &sample.sessionsOpened},
       {"specula_sessions_resumed_total", &sample.sessionsResumed},
       {"specula_resumes_refused_total", &sample.resumesRefused},

@@ -17,7 +17,8 @@ struct ServerSample {
   double rssMiB = 0.0;   // VmRSS
   double fds = 0.0;      // entries of /proc/<pid>/fd
   double glObjects = 0.0, sessions = 0.0;
-  double framesSent = 0.0, framesSkipped = 0.0, sessionsOpened = 0.0, sessionsResumed = 0.0, resumesRefused = 0.0;
+  double framesSent = 0.0, framesSkipped = 0.0, writeTimeouts = 0.0;
+  double sessionsOpened = 0.0, sessionsResumed = 0.0, resumesRefused = 0.0;
   std::uint64_t framesReceived = 0;  // by the clients, so far
 };
 

@@ -33,16 +33,20 @@ CommandLine soakBenchOptions() {
       "specula bench soak [options]",
       "Starts `specula serve` (this executable) on a free loopback port with a resume secret and holds --sessions\n"
       "WebSocket sessions against it for --minutes, each sending camera updates at 60 Hz and playing one role in\n"
-      "turn: steady; a slow reader (250 ms before each read); a reader that stops for 15 s every 30 s while its\n"
-      "camera keeps moving; a client that vanishes (socket closed, no close handshake) every 10 s and resumes;\n"
+      "turn: steady; a slow reader (250 ms before each read); a reader on a thin pipe (8 KiB receive buffer) that\n"
+      "stops for 15 s every 30 s while its camera keeps moving, so the server skips its frames and drops it at\n"
+      "the 5 s write deadline, and it resumes; a client that vanishes (socket closed, no close handshake) every 10 s "
+      "and resumes;\n"
       "one that changes render settings every 3 s. Four times in the run every session drops at once and\n"
       "resumes (a reconnect storm). Every --sample-seconds it reads the server's resident memory and open file\n"
-      "descriptors (/proc/<pid>) and its /metrics (live GL objects, sessions, frames sent and skipped, resumes).\n"
+      "descriptors (/proc/<pid>) and its /metrics (live GL objects, sessions, frames sent and skipped, write\n"
+      "timeouts, resumes).\n"
       "Prints the samples as a table, frames delivered and latency percentiles, and the trend of memory, file\n"
       "descriptors and GL objects after the warm-up (a least-squares line). Fails (exit 1) naming what grew\n"
       "beyond its tolerance with a slope 3 standard errors above zero, or when the server's counters disagree\n"
       "with what the clients saw (frames sent < frames received, resumes counted outside what the clients\n"
-      "were told and tried, sessions left open after the clients closed), a session ended in an error or\n"
+      "were told and tried, fewer write timeouts than stops past the deadline, sessions left open after the\n"
+      "clients closed), a session ended in an error or\n"
       "received no frame, or the server did not exit cleanly on SIGTERM.",
       {
           {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
@@ -149,6 +153,7 @@ int runSoakBench(std::span<const std::string> arguments) {
   std::tie(load.width, load.height) = *size;
   load.duration = std::chrono::milliseconds(static_cast<long>(runSeconds * 1000.0));
   load.warmup = 0ms;  // every frame counts, so the clients' totals compare with the server's counters
+  load.sessionReconnect = [&](int session) { return clients.connection(session, load.reconnect); };
   load.script = [&](int session, double seconds, client::ResumingClient& client) {
     return clients.act(session, seconds, client);
   };

@@ -5,10 +5,15 @@
 #include <thread>
 
 #include "OrbitCamera.h"
+#include "net/ServerOptions.h"
 
 namespace specula::app {
 
 namespace {
+
+// `specula bench soak` serves with the default write deadline; a stop must outlast it by a frame or two.
+const double kWriteDeadlineSeconds = std::chrono::duration<double>(net::ServerOptions{}.writeTimeout).count();
+constexpr double kDeadlineMarginSeconds = 5.0;
 
 // A cycle of complete settings, so every state comes back and its GL resources can be reused: methods,
 // search strategies and render sizes (resolution scale) that allocate different passes and targets.
@@ -88,6 +93,11 @@ SoakClients::SoakClients(int sessions, SoakTiming timing)
   }
 }
 
+client::ReconnectPolicy SoakClients::connection(int session, client::ReconnectPolicy policy) const {
+  if (role(session) == SoakRole::Stopper) policy.receiveBufferBytes = timing_.stopperReceiveBufferBytes;
+  return policy;
+}
+
 Status SoakClients::act(int session, double seconds, client::ResumingClient& client) {
   SessionState& state = states_.at(static_cast<std::size_t>(session));
   const double nextStorm =
@@ -102,10 +112,13 @@ Status SoakClients::act(int session, double seconds, client::ResumingClient& cli
   if (role == SoakRole::SlowReader) sleepSeconds(timing_.slowReadPauseSeconds);
   if (seconds < state.nextEvent) return {};
   switch (role) {
-    case SoakRole::Stopper:
+    case SoakRole::Stopper: {
       ++stops_;
       state.nextEvent = seconds + timing_.stopEverySeconds;
-      return stopReading(client, std::min(timing_.stopForSeconds, timing_.runSeconds - seconds - 1.0));
+      const double stopFor = std::min(timing_.stopForSeconds, timing_.runSeconds - seconds - 1.0);
+      if (stopFor >= kWriteDeadlineSeconds + kDeadlineMarginSeconds) ++longStops_;
+      return stopReading(client, stopFor);
+    }
     case SoakRole::Vanisher:
       ++drops_;
       client.drop();  // frames keep streaming to it, so the reset usually lands mid-frame
@@ -122,7 +135,7 @@ Status SoakClients::act(int session, double seconds, client::ResumingClient& cli
 SoakActions SoakClients::actions() const {
   int storms = 0;
   for (const SessionState& state : states_) storms = std::max(storms, state.stormsJoined);
-  return {storms, drops_.load(), stops_.load(), settingsSent_.load()};
+  return {storms, drops_.load(), stops_.load(), settingsSent_.load(), longStops_.load()};
 }
 
 }  // namespace specula::app

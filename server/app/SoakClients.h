@@ -21,20 +21,26 @@ struct SoakTiming {
   double runSeconds = 600.0;
   int storms = 4;                                         // evenly spread: at 1/5, 2/5, 3/5 and 4/5 of the run
   double slowReadPauseSeconds = 0.25;                     // a slow reader's wait before each read
-  double stopEverySeconds = 30.0, stopForSeconds = 15.0;  // long enough to fill the socket buffers and pass
-                                                          // the server's 5 s write deadline
+  double stopEverySeconds = 30.0, stopForSeconds = 15.0;  // longer than the server's 5 s write deadline
+  // A stopping reader's receive buffer: a thin pipe that a frame or two fills, so the server's write
+  // waits, newer frames replace the one queued, and the deadline drops the connection (which resumes).
+  // Loopback's autotuned receive buffers (up to tcp_rmem's 32 MiB) hold a 15 s pause at a few frames a second.
+  int stopperReceiveBufferBytes = 8 << 10;
   double vanishEverySeconds = 10.0;
   double settingsEverySeconds = 3.0;
 };
 
 struct SoakActions {  // what the clients did, for the report
   int storms = 0, drops = 0, stops = 0, settingsSent = 0;
+  int longStops = 0;  // stops that outlasted the server's write deadline by a margin
 };
 
 class SoakClients {
  public:
   SoakClients(int sessions, SoakTiming timing);
   static SoakRole role(int session) { return kSoakRoles[static_cast<std::size_t>(session) % kSoakRoles.size()]; }
+  // LoadOptions::sessionReconnect: the connection each role makes.
+  client::ReconnectPolicy connection(int session, client::ReconnectPolicy policy) const;
   // LoadOptions::script: called by session `session`'s thread only.
   Status act(int session, double seconds, client::ResumingClient& client);
   SoakActions actions() const;  // once the sessions' threads have ended
@@ -47,7 +53,7 @@ class SoakClients {
   };
   SoakTiming timing_;
   std::vector<SessionState> states_;
-  std::atomic<int> drops_{0}, stops_{0}, settingsSent_{0};
+  std::atomic<int> drops_{0}, stops_{0}, longStops_{0}, settingsSent_{0};
 };
 
 }  // namespace specula::app

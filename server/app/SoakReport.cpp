@@ -96,6 +96,13 @@ SoakVerdict judgeSoak(const SoakRun& run) {
                "reconnects",
                server.resumesRefused, refused),
         "the server's refused-resume count disagrees with the clients'");
+  // A stopped reader's thin pipe fills within a frame or two, so each stop that outlasts the server's write
+  // deadline ends in at least one dropped connection (the client resumes, fills the new one, and may be dropped again).
+  check(
+      server.writeTimeouts >= run.actions.longStops,
+      format("connections dropped at the write deadline %.0f: at least one for each of the %d stops that outlasted it",
+             server.writeTimeouts, run.actions.longStops),
+      "stopped readers were not dropped at the write deadline");
   check(run.afterClose && run.afterClose->sessions == 0.0,
         format("no session left open once the clients closed (%.0f)", run.afterClose ? run.afterClose->sessions : -1.0),
         "sessions stayed open after their clients closed");
@@ -105,13 +112,13 @@ SoakVerdict judgeSoak(const SoakRun& run) {
 }
 
 std::string soakTableHeader() {
-  return "     s   RSS MiB   fds  GL objects  sessions  frames sent  received  skipped  resumed\n";
+  return "     s   RSS MiB   fds  GL objects  sessions  frames sent  received  skipped  timeouts  resumed\n";
 }
 
 std::string soakTableRow(const ServerSample& s) {
-  return format("%6.0f  %8.1f  %4.0f  %10.0f  %8.0f  %11.0f  %8llu  %7.0f  %7.0f\n", s.seconds, s.rssMiB, s.fds,
+  return format("%6.0f  %8.1f  %4.0f  %10.0f  %8.0f  %11.0f  %8llu  %7.0f  %8.0f  %7.0f\n", s.seconds, s.rssMiB, s.fds,
                 s.glObjects, s.sessions, s.framesSent, static_cast<unsigned long long>(s.framesReceived),
-                s.framesSkipped, s.sessionsResumed);
+                s.framesSkipped, s.writeTimeouts, s.sessionsResumed);
 }
 
 std::string soakSummary(const SoakRun& run, const SoakVerdict& verdict) {
@@ -124,8 +131,10 @@ std::string soakSummary(const SoakRun& run, const SoakVerdict& verdict) {
       "%d settings changes\n",
       run.sessions, run.width, run.height, run.scene.c_str(), run.runSeconds, run.warmupSeconds, run.actions.storms,
       run.actions.drops, run.actions.stops, run.actions.settingsSent);
-  out += format("frames delivered %llu (%.1f fps a session, slowest %.1f), %llu skipped by the server\n",
-                static_cast<unsigned long long>(load.frames), load.fpsMean, load.fpsMin, last.framesSkipped);
+  out += format(
+      "frames delivered %llu (%.1f fps a session, slowest %.1f), %.0f skipped by the server; %.0f connections "
+      "dropped at the write deadline\n",
+      static_cast<unsigned long long>(load.frames), load.fpsMean, load.fpsMin, last.framesSkipped, last.writeTimeouts);
   out += format(
       "input-to-frame latency ms: sessions reading promptly p50 %.0f p99 %.0f; all p50 %.0f p99 %.0f "
       "max %.0f\n",
@@ -145,12 +154,12 @@ std::string soakSummary(const SoakRun& run, const SoakVerdict& verdict) {
 
 std::string soakCsv(const SoakRun& run) {
   std::string csv =
-      "seconds,rss_mib,fds,gl_objects,sessions,frames_sent,frames_received,frames_skipped,sessions_opened,"
-      "sessions_resumed,resumes_refused\n";
+      "seconds,rss_mib,fds,gl_objects,sessions,frames_sent,frames_received,frames_skipped,write_timeouts,"
+      "sessions_opened,sessions_resumed,resumes_refused\n";
   for (const ServerSample& s : run.samples)
-    csv += format("%.1f,%.2f,%.0f,%.0f,%.0f,%.0f,%llu,%.0f,%.0f,%.0f,%.0f\n", s.seconds, s.rssMiB, s.fds, s.glObjects,
-                  s.sessions, s.framesSent, static_cast<unsigned long long>(s.framesReceived), s.framesSkipped,
-                  s.sessionsOpened, s.sessionsResumed, s.resumesRefused);
+    csv += format("%.1f,%.2f,%.0f,%.0f,%.0f,%.0f,%llu,%.0f,%.0f,%.0f,%.0f,%.0f\n", s.seconds, s.rssMiB, s.fds,
+                  s.glObjects, s.sessions, s.framesSent, static_cast<unsigned long long>(s.framesReceived),
+                  s.framesSkipped, s.writeTimeouts, s.sessionsOpened, s.sessionsResumed, s.resumesRefused);
   return csv;
 }
 
@@ -171,6 +180,7 @@ std::string soakJson(const SoakRun& run, const SoakVerdict& verdict) {
                        {"frames_sent", s.framesSent},
                        {"frames_received", s.framesReceived},
                        {"frames_skipped", s.framesSkipped},
+                       {"write_timeouts", s.writeTimeouts},
                        {"sessions_opened", s.sessionsOpened},
                        {"sessions_resumed", s.sessionsResumed},
                        {"resumes_refused", s.resumesRefused}});
@@ -185,6 +195,7 @@ std::string soakJson(const SoakRun& run, const SoakVerdict& verdict) {
        {{"storms", run.actions.storms},
         {"drops", run.actions.drops},
         {"stops", run.actions.stops},
+        {"stops_past_the_write_deadline", run.actions.longStops},
         {"settings_changes", run.actions.settingsSent}}},
       {"samples", samples},
       {"trends",

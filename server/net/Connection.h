@@ -42,6 +42,7 @@ class ConnectionHandler {
   virtual ~ConnectionHandler() = default;
   virtual void onMessage(std::string_view payload, bool text) = 0;
   virtual void onOversizedMessage() = 0;  // the connection is being closed with 1009
+  virtual void onWriteTimedOut() = 0;     // the client stopped reading: the connection is being dropped
   virtual void onFrameSent(std::size_t bytes) = 0;
   virtual void onFrameReplaced() = 0;
   virtual void onClosed() = 0;  // exactly once, when the connection is gone

@@ -19,6 +19,10 @@ struct ServerOptions {
   std::size_t maxMessageBytes = 64 * 1024;  // client WebSocket messages; larger closes with 1009
   std::size_t maxConnections = 256;         // open TCP connections; more are closed at once
   std::size_t maxQueuedControlMessages = 64;
+  // Unsent bytes a WebSocket's kernel buffer may hold (TCP_NOTSENT_LOWAT). Past it a write waits, so a slow
+  // reader's newer frames replace the waiting one (latest wins) instead of queueing in a socket buffer that
+  // autotunes to megabytes, seconds of stale frames; bytes in flight are not counted, so throughput is not capped.
+  std::size_t unsentBytesLimit = 128 * 1024;
   std::chrono::milliseconds handshakeTimeout{5000};     // HTTP request or WebSocket upgrade
   std::chrono::milliseconds writeTimeout{5000};         // one message to a client that stopped reading
   std::chrono::milliseconds firstMessageTimeout{5000};  // from the upgrade to the client's first message

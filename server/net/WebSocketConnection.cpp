@@ -1,5 +1,9 @@
 #include "net/WebSocketConnection.h"
 
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+
 #include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 
@@ -30,6 +34,10 @@ void WebSocketConnection::start(Request request, protocol::Encoding encoding, st
   timeouts.idle_timeout = options_.idleTimeout;
   timeouts.keep_alive_pings = true;
   ws_.set_option(timeouts);
+  const int unsentLimit = static_cast<int>(options_.unsentBytesLimit);
+  // Best effort: a kernel without it queues as before, and the write deadline still bounds a stalled client.
+  (void)::setsockopt(beast::get_lowest_layer(ws_).socket().native_handle(), IPPROTO_TCP, TCP_NOTSENT_LOWAT,
+                     &unsentLimit, sizeof unsentLimit);
   // The size limit is enforced in onRead, not with read_message_max: Boost 1.74's teardown after that
   // limit can reset the connection before the client reads the 1009 close frame.
   ws_.read_message_max(0);
@@ -118,6 +126,7 @@ void WebSocketConnection::doWrite() {
   writeDeadline_.async_wait([weak = weak_from_this()](beast::error_code error) {
     auto self = weak.lock();
     if (error || !self || !self->writeInFlight_) return;
+    if (self->handler_) self->handler_->onWriteTimedOut();
     beast::error_code ignored;
     beast::get_lowest_layer(self->ws_).socket().close(ignored);  // the client stopped reading: drop it
   });

@@ -24,6 +24,9 @@ std::string ServiceMetrics::prometheusText() const {
          static_cast<double>(frameBytesSent.load()));
   sample("specula_protocol_errors_total", "counter", "Connections closed for malformed or oversized messages.",
          static_cast<double>(protocolErrors.load()));
+  sample("specula_write_timeouts_total", "counter",
+         "Connections dropped because a write waited past the write deadline (the client stopped reading).",
+         static_cast<double>(writeTimeouts.load()));
   sample("specula_render_failures_total", "counter", "Frames the renderer could not produce.",
          static_cast<double>(renderFailures.load()));
   renderMs.appendPrometheus(out, "specula_render_milliseconds", "Wall-clock render time per frame.");

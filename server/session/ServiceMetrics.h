@@ -12,7 +12,7 @@ struct ServiceMetrics {
   std::atomic<std::int64_t> sessions{0};
   std::atomic<std::uint64_t> sessionsOpened{0}, sessionsRefused{0}, sessionsResumed{0}, resumesRefused{0};
   std::atomic<std::uint64_t> framesSent{0}, framesSkipped{0}, frameBytesSent{0};
-  std::atomic<std::uint64_t> protocolErrors{0}, renderFailures{0};
+  std::atomic<std::uint64_t> protocolErrors{0}, renderFailures{0}, writeTimeouts{0};
   net::Histogram renderMs{{2, 5, 10, 20, 35, 50, 75, 100, 150, 250, 500, 1000, 2500}};
   net::Histogram encodeMs{{0.5, 1, 2, 5, 10, 20, 50, 100}};
   net::Histogram latencyMs{{5, 10, 20, 35, 50, 75, 100, 150, 250, 500, 1000, 2500}};  // input arrival → frame queued

@@ -430,6 +430,7 @@ void Session::renderFailed(const FrameRequest&, const std::string& text) {
 }
 
 void Session::onOversizedMessage() { hub_.metrics().protocolErrors++; }
+void Session::onWriteTimedOut() { hub_.metrics().writeTimeouts++; }
 
 void Session::onFrameSent(std::size_t bytes) {
   {

@@ -37,6 +37,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   // net::ConnectionHandler
   void onMessage(std::string_view payload, bool text) override;
   void onOversizedMessage() override;
+  void onWriteTimedOut() override;
   void onFrameSent(std::size_t bytes) override;
   void onFrameReplaced() override;
   void onClosed() override;

@@ -16,7 +16,7 @@ fails_with "a warm-up as long as the run is refused" "--warmup expects" bench so
 check "a one-minute soak with 8 sessions passes" test $? -eq 0
 output=$(cat "$work/out.txt")
 check "the table has its columns" contains "$output" \
-  '^ *s *RSS MiB *fds *GL objects *sessions *frames sent *received *skipped *resumed$'
+  '^ *s *RSS MiB *fds *GL objects *sessions *frames sent *received *skipped *timeouts *resumed$'
 check "the table has a row a sample, from 0 s to 60 s" contains "$output" '^ *0  ' '^ *60  '
 check "the summary names frames, latency and the three trends" contains "$output" '^frames delivered [1-9]' \
   '^input-to-frame latency ms: .* p99 [0-9]' '^RSS MiB .* at start' '^fds .* at start' '^GL objects .* at start'
@@ -24,9 +24,12 @@ check "the clients stormed, dropped, stopped and changed settings" contains "$ou
   ' [1-9][0-9]* storms, [1-9][0-9]* abrupt drops, [1-9][0-9]* stops, [1-9][0-9]* settings changes'
 check "the counters agree with the clients" contains "$output" '^ok - frames sent' '^ok - resumes counted' \
   '^ok - no session left open'
+check "the stopped readers' thin pipes filled: the server skipped frames and dropped them at its deadline" contains \
+  "$output" ', [1-9][0-9]* skipped by the server; [1-9][0-9]* connections dropped at the write deadline$' \
+  '^ok - connections dropped at the write deadline [1-9][0-9]*: at least one for each of the 2 stops'
 check "it says PASS" contains "$output" '^PASS$'
 check "progress goes to stderr as samples arrive" grep -q '^bench soak: 8 sessions for 60 s' "$work/progress.txt"
-check "the CSV has its header" grep -qx 'seconds,rss_mib,fds,gl_objects,sessions,frames_sent,frames_received,frames_skipped,sessions_opened,sessions_resumed,resumes_refused' "$work/soak.csv"
+check "the CSV has its header" grep -qx 'seconds,rss_mib,fds,gl_objects,sessions,frames_sent,frames_received,frames_skipped,write_timeouts,sessions_opened,sessions_resumed,resumes_refused' "$work/soak.csv"
 check "the CSV has a row a sample" test "$(wc -l <"$work/soak.csv")" -ge 12
 check "the JSON says it passed and has the trends" python3 -c '
 import json, sys

@@ -401,6 +401,7 @@ TEST(StreamingServerLimits, AClientThatStopsReadingIsDroppedWithItsSkippedFrames
   }
   EXPECT_EQ(rig.hub().sessionCount(), 1u) << "the stalled session was dropped and its memory freed";
   EXPECT_GT(rig.hub().metrics().framesSkipped.load(), 0u) << "frames it could not take were counted";
+  EXPECT_EQ(rig.hub().metrics().writeTimeouts.load(), 1u) << "its drop was counted as a write timeout, once";
   EXPECT_TRUE(receiveUntil(*reader, isFrame)) << "the reading client is still served";
   EXPECT_EQ(rig.server().openWebSockets(), 1u);
 }
@@ -563,8 +564,9 @@ TEST(StreamingServerHttp, ServesHealthMetricsAndStaticFilesAndNothingOutsideTheW
   const HttpReply metrics = httpRequest(rig.port(), "/metrics");
   EXPECT_EQ(metrics.status, 200);
   for (const char* name : {"specula_sessions 1", "specula_frames_sent_total", "specula_frames_skipped_total",
-                           "specula_frame_bytes_sent_total", "specula_render_milliseconds_bucket{le=\"+Inf\"}",
-                           "specula_encode_milliseconds_count", "specula_input_to_frame_milliseconds_sum"})
+                           "specula_write_timeouts_total 0", "specula_frame_bytes_sent_total",
+                           "specula_render_milliseconds_bucket{le=\"+Inf\"}", "specula_encode_milliseconds_count",
+                           "specula_input_to_frame_milliseconds_sum"})
     EXPECT_NE(metrics.body.find(name), std::string::npos) << name;
   const HttpReply index = httpRequest(rig.port(), "/");
   EXPECT_EQ(index.status, 200);

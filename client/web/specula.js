@@ -263,7 +263,10 @@
     if (!state.camera) state.camera = orbitFrom(welcome.camera);
     [canvas.width, canvas.height] = viewportSize();
     redraw();
-    showStatus(welcome.resumed ? 'Reconnected: camera, animation and settings restored.' : '', 'info');
+    // What the scene's files hold that the server left out or read differently (notes), until dismissed by the next status.
+    const notes = welcome.scene.notes || [];
+    showStatus(welcome.resumed ? 'Reconnected: camera, animation and settings restored.'
+      : notes.length ? `Scene notes: ${notes.join('; ')}` : '', 'info');
     if (welcome.resumed) setTimeout(() => showStatus(''), 2000);
     else applyLinkParameters();
   }

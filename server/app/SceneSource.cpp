@@ -42,16 +42,19 @@ Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrF
     for (std::string_view name : scene::builtinSceneNames()) names += (names.empty() ? "" : ", ") + std::string(name);
     return Error{"scene '" + nameOrFile + "' is neither a built-in scene (" + names + ") nor an existing file"};
   }
+  std::shared_ptr<const scene::Scene> loaded;
   if (scene::isGltfFile(nameOrFile)) {
     auto imported = scene::importGltfScene(nameOrFile, choice);
     if (!imported) return Error{imported.error()};
-    for (const std::string& note : imported->notes)
-      std::fprintf(stderr, "specula: %s: %s\n", nameOrFile.c_str(), note.c_str());
-    return std::make_shared<const scene::Scene>(std::move(imported->scene));
+    loaded = std::make_shared<const scene::Scene>(std::move(imported->scene));
+  } else {
+    auto file = scene::loadSceneFile(nameOrFile);
+    if (!file) return Error{file.error()};
+    loaded = std::make_shared<const scene::Scene>(std::move(file.value()));
   }
-  auto loaded = scene::loadSceneFile(nameOrFile);
-  if (!loaded) return Error{loaded.error()};
-  return std::make_shared<const scene::Scene>(std::move(loaded.value()));
+  for (const std::string& note : loaded->notes)
+    std::fprintf(stderr, "specula: %s: %s\n", nameOrFile.c_str(), note.c_str());
+  return loaded;
 }
 
 }  // namespace specula::app

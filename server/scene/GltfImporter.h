@@ -49,8 +49,7 @@ struct GltfSceneChoice {
 };
 
 struct ImportedGltfScene {
-  Scene scene;
-  std::vector<std::string> notes;  // what was read differently from the file, for the user
+  Scene scene;  // its notes say what was read differently from the file, or left out
 };
 
 // The chosen glTF scene: every node with a mesh, at its world transform (TRS or matrix, composed

@@ -35,7 +35,9 @@ inline std::size_t trianglesFacingAgainstNormals(const Mesh& mesh) {
 }
 
 // True when, after merging vertices at the same position (seams, poles, creases), every directed edge
-// occurs exactly once and its reverse occurs too: a closed, consistently oriented surface.
+// occurs exactly once and its reverse occurs too: a closed, consistently oriented surface. Triangles
+// that merging collapses (a UV sphere's quads at its poles, written as two triangles) bound nothing and
+// are left out, or the common way of writing a sphere would look open.
 inline bool isWatertight(const Mesh& mesh) {
   using Key = std::tuple<long, long, long>;
   std::map<Key, std::size_t> ids;
@@ -45,8 +47,11 @@ inline bool isWatertight(const Mesh& mesh) {
     return ids.emplace(key, ids.size()).first->second;
   };
   std::map<std::pair<std::size_t, std::size_t>, int> edges;
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
-    for (int k = 0; k < 3; ++k) ++edges[{id(mesh.indices[3 * t + k]), id(mesh.indices[3 * t + (k + 1) % 3])}];
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const std::size_t corner[3] = {id(mesh.indices[3 * t]), id(mesh.indices[3 * t + 1]), id(mesh.indices[3 * t + 2])};
+    if (corner[0] == corner[1] || corner[1] == corner[2] || corner[2] == corner[0]) continue;
+    for (int k = 0; k < 3; ++k) ++edges[{corner[k], corner[(k + 1) % 3]}];
+  }
   for (const auto& [edge, count] : edges) {
     const auto reverse = edges.find({edge.second, edge.first});
     if (count != 1 || reverse == edges.end() || reverse->second != 1) return false;

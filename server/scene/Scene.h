@@ -30,6 +30,9 @@ struct Scene {
   glm::vec3 background{0.0f};  // linear RGB
   math::Camera camera;         // default camera (rest pose of the camera animation, if any)
   std::vector<Animation> animations;
+  // What loading read differently from the files or left out, one line each, for the user: printed when
+  // the scene loads and sent in every session's welcome.
+  std::vector<std::string> notes;
 
   std::size_t vertexCount() const;
   std::size_t triangleCount() const;

@@ -1,10 +1,12 @@
 #include "scene/Texture.h"
 
 #include <stb/stb_image.h>
+#include <turbojpeg.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "math/Color.h"
 
@@ -47,6 +49,62 @@ TextureLevel halve(const TextureLevel& level) {
   return next;
 }
 
+struct DecodedImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+// The header's size, checked before anything is allocated for the texels.
+Status checkSide(const std::string& name, int width, int height) {
+  if (width < 1 || height < 1 || width > kMaxTextureSide || height > kMaxTextureSide)
+    return Error{name + ": the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                 " texels; a texture side must be 1.." + std::to_string(kMaxTextureSide) + ", so scale it down"};
+  return {};
+}
+
+Result<DecodedImage> decodePng(std::string_view bytes, const std::string& name) {
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = static_cast<int>(bytes.size());
+  DecodedImage image;
+  int channels = 0;
+  if (!stbi_info_from_memory(data, length, &image.width, &image.height, &channels))
+    return Error{name + ": not an image this build reads (" + std::string(stbi_failure_reason()) +
+                 "); use PNG or JPEG"};
+  if (Status side = checkSide(name, image.width, image.height); !side) return Error{side.error()};
+  int decodedWidth = 0, decodedHeight = 0;
+  stbi_uc* pixels = stbi_load_from_memory(data, length, &decodedWidth, &decodedHeight, &channels, 4);
+  if (!pixels)
+    return Error{name + ": the image cannot be decoded (" + std::string(stbi_failure_reason()) +
+                 "); is it truncated or corrupt?"};
+  const std::unique_ptr<stbi_uc, void (*)(void*)> owned(pixels, stbi_image_free);
+  if (decodedWidth != image.width || decodedHeight != image.height)
+    return Error{name + ": the image's header and its data disagree on its size"};
+  image.rgba.assign(pixels,
+                    pixels + static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4);
+  return image;
+}
+
+// libjpeg-turbo, the decoder OSS-Fuzz keeps fuzzing: corrupt data is an error (not a warning decoded as
+// grey), and a progressive file may not make it run thousands of scans.
+Result<DecodedImage> decodeJpeg(std::string_view bytes, const std::string& name) {
+  const std::unique_ptr<void, int (*)(tjhandle)> decoder(tjInitDecompress(), tjDestroy);
+  if (!decoder) return Error{name + ": the JPEG decoder could not start: " + std::string(tjGetErrorStr2(nullptr))};
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  const auto length = static_cast<unsigned long>(bytes.size());
+  DecodedImage image;
+  int subsampling = 0, colourSpace = 0;
+  if (tjDecompressHeader3(decoder.get(), data, length, &image.width, &image.height, &subsampling, &colourSpace) != 0)
+    return Error{name + ": not a JPEG this build reads (" + std::string(tjGetErrorStr2(decoder.get())) +
+                 "); use PNG or JPEG"};
+  if (Status side = checkSide(name, image.width, image.height); !side) return Error{side.error()};
+  image.rgba.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4);
+  if (tjDecompress2(decoder.get(), data, length, image.rgba.data(), image.width, 0, image.height, TJPF_RGBA,
+                    TJFLAG_ACCURATEDCT | TJFLAG_STOPONWARNING | TJFLAG_LIMITSCANS) != 0)
+    return Error{name + ": the image cannot be decoded (" + std::string(tjGetErrorStr2(decoder.get())) +
+                 "); is it truncated or corrupt?"};
+  return image;
+}
+
 }  // namespace
 
 std::size_t Texture::texelCount() const {
@@ -69,33 +127,14 @@ Result<Texture> decodeTexture(std::string_view bytes, std::string name) {
   if (bytes.empty()) return Error{name + ": the image is empty"};
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     return Error{name + ": the image file is too large to decode"};
-  // stb_image reads a dozen formats and Debian's build crashes on hostile PNM files (found by fuzzing):
-  // only the two that glTF allows reach it.
-  if (!bytes.starts_with("\x89PNG\r\n\x1a\n") && !bytes.starts_with("\xff\xd8\xff"))
+  // Only the two formats glTF allows are read: stb_image's other decoders crash Debian's build on hostile
+  // PNM files, and its JPEG decoder asserts (aborts the process) on some corrupt ones, all found by fuzzing.
+  const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n"), jpeg = bytes.starts_with("\xff\xd8\xff");
+  if (!png && !jpeg)
     return Error{name + ": not an image this build reads (neither PNG nor JPEG); convert it to PNG or JPEG"};
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int length = static_cast<int>(bytes.size());
-  int width = 0, height = 0, channels = 0;
-  // The header first: a hostile file must not make the decoder allocate for a huge image.
-  if (!stbi_info_from_memory(data, length, &width, &height, &channels))
-    return Error{name + ": not an image this build reads (" + std::string(stbi_failure_reason()) +
-                 "); use PNG or JPEG"};
-  if (width < 1 || height < 1 || width > kMaxTextureSide || height > kMaxTextureSide)
-    return Error{name + ": the image is " + std::to_string(width) + "x" + std::to_string(height) +
-                 " texels; a texture side must be 1.." + std::to_string(kMaxTextureSide) + ", so scale it down"};
-  int decodedWidth = 0, decodedHeight = 0;
-  stbi_uc* pixels = stbi_load_from_memory(data, length, &decodedWidth, &decodedHeight, &channels, 4);
-  if (!pixels)
-    return Error{name + ": the image cannot be decoded (" + std::string(stbi_failure_reason()) +
-                 "); is it truncated or corrupt?"};
-  if (decodedWidth != width || decodedHeight != height) {
-    stbi_image_free(pixels);
-    return Error{name + ": the image's header and its data disagree on its size"};
-  }
-  std::vector<std::uint8_t> rgba(pixels,
-                                 pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
-  stbi_image_free(pixels);
-  return textureFromPixels(std::move(name), width, height, std::move(rgba));
+  Result<DecodedImage> image = jpeg ? decodeJpeg(bytes, name) : decodePng(bytes, name);
+  if (!image) return Error{image.error()};
+  return textureFromPixels(std::move(name), image->width, image->height, std::move(image->rgba));
 }
 
 }  // namespace specula::scene

@@ -212,6 +212,7 @@ v1::Welcome Session::welcome(bool resumed, Clock::time_point now) const {
   *info.mutable_up() = toProto(scene.camera.up);
   info.set_fov_degrees(scene.camera.fovYDegrees);
   info.set_animated(!scene.animations.empty());
+  for (const std::string& note : scene.notes) info.add_notes(note);
   v1::Limits& limits = *out.mutable_limits();
   limits.set_max_message_bytes(static_cast<std::uint32_t>(options.maxMessageBytes));
   limits.set_max_width(static_cast<std::uint32_t>(options.maxWidth));

@@ -12,7 +12,9 @@
 #include <fstream>
 #include <functional>
 #include <random>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "CameraConversions.h"
 #include "SpeculaClient.h"
@@ -67,6 +69,7 @@ struct RigOptions {
   net::ServerOptions server;
   FakeRendererOptions renderer;
   std::string bind = "127.0.0.1";
+  std::vector<std::string> sceneNotes;  // as a loader would leave them on the scene
 };
 
 inline RigOptions defaultRigOptions() {
@@ -83,7 +86,9 @@ inline RigOptions defaultRigOptions() {
 class ServerRig {
  public:
   explicit ServerRig(RigOptions options = defaultRigOptions(), const char* sceneName = "checker-sphere") {
-    scene_ = std::make_shared<const scene::Scene>(*scene::makeBuiltinScene(sceneName));
+    scene::Scene scene = *scene::makeBuiltinScene(sceneName);
+    scene.notes = options.sceneNotes;
+    scene_ = std::make_shared<const scene::Scene>(std::move(scene));
     auto factory = [this, renderer = options.renderer]() -> Result<std::unique_ptr<session::FrameRenderer>> {
       return std::unique_ptr<session::FrameRenderer>(new FakeRenderer(renderer, renders));
     };

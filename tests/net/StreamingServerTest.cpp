@@ -39,6 +39,18 @@ double meanGrey(const v1::Frame& frame) {
 
 class StreamingServer : public ::testing::TestWithParam<Encoding> {};
 
+TEST_P(StreamingServer, TheWelcomeNamesWhatTheScenesFilesHeldThatWasNotRead) {
+  RigOptions options = defaultRigOptions();
+  options.sceneNotes = {"2 animations not played", "extension KHR_materials_clearcoat is not read"};
+  ServerRig rig(options);
+  auto client = rig.connect(GetParam());
+  ASSERT_TRUE(client);
+  const v1::Welcome welcome = greet(*client, 80, 60);
+  ASSERT_EQ(welcome.scene().notes_size(), 2);
+  EXPECT_EQ(welcome.scene().notes(0), "2 animations not played");
+  EXPECT_EQ(welcome.scene().notes(1), "extension KHR_materials_clearcoat is not read");
+}
+
 TEST_P(StreamingServer, HandshakeWelcomesAndSendsAFirstStillFrame) {
   ServerRig rig;
   auto client = rig.connect(GetParam());

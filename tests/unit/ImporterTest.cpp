@@ -298,7 +298,7 @@ TEST_F(Importer, GltfSceneComposesNodeTransformsDownTheTree) {
     EXPECT_EQ(scene.lights[0].kind, Light::Kind::Directional);
     expectNear(scene.lights[0].vector, {0, std::sqrt(0.5f), std::sqrt(0.5f)});
     EXPECT_FLOAT_EQ(scene.lights[0].intensity, 1.0f);
-    EXPECT_TRUE(imported->notes.empty());
+    EXPECT_TRUE(imported->scene.notes.empty());
   }
 }
 
@@ -355,9 +355,32 @@ TEST_F(Importer, GltfSceneKeepsAnOpenChromeMeshInItsColourAndSaysSo) {
   Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
   ASSERT_TRUE(imported.ok()) << imported.error();
   EXPECT_FALSE(imported->scene.objects[0].mirror.has_value());
-  ASSERT_EQ(imported->notes.size(), 1u);
-  EXPECT_NE(imported->notes[0].find("'shard' has a mirror material but an open mesh"), std::string::npos)
-      << imported->notes[0];
+  ASSERT_EQ(imported->scene.notes.size(), 1u);
+  EXPECT_NE(imported->scene.notes[0].find("'shard' has a mirror material but an open mesh"), std::string::npos)
+      << imported->scene.notes[0];
+}
+
+TEST_F(Importer, GltfSceneNamesTheAnimationsSkinsMorphTargetsAndExtensionsItDoesNotRead) {
+  json document = triangleGltf();
+  document["nodes"] = json::parse(R"([{"mesh": 0, "name": "leaf"}])");
+  document["scenes"] = json::parse(R"([{"nodes": [0]}])");
+  document["meshes"][0]["primitives"][0]["targets"] = json::parse(R"([{"POSITION": 0}])");
+  document["skins"] = json::parse(R"([{"joints": [0]}])");
+  document["animations"] = json::parse(
+      R"([{"channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+           "samplers": [{"input": 0, "output": 0}]},
+          {"channels": [{"sampler": 0, "target": {"node": 0, "path": "scale"}}],
+           "samplers": [{"input": 0, "output": 0}]}])");
+  document["extensionsUsed"] = json::parse(R"(["KHR_lights_punctual", "KHR_materials_clearcoat"])");
+  Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
+  ASSERT_TRUE(imported.ok()) << imported.error();
+  std::string notes;
+  for (const std::string& note : imported->scene.notes) notes += note + "\n";
+  EXPECT_EQ(imported->scene.notes.size(), 4u) << notes;
+  for (const char* expected : {"2 animations not played", "1 skin not applied", "1 primitive has morph targets",
+                               "extension KHR_materials_clearcoat is not read"})
+    EXPECT_NE(notes.find(expected), std::string::npos) << expected << " in\n" << notes;
+  EXPECT_EQ(notes.find("KHR_lights_punctual"), std::string::npos) << "a read extension is not named";
 }
 
 // The textured box: base colour textures from an external PNG, one per sampler the file pairs it with.
@@ -382,7 +405,7 @@ TEST_F(Importer, GltfSceneReadsBaseColourTexturesWithTheirSamplers) {
   float high = 0.0f;
   for (const Vertex& v : scene.meshes[crate->mesh].vertices) high = std::max(high, v.uv.x);
   EXPECT_FLOAT_EQ(high, 1.0f);
-  EXPECT_TRUE(imported->notes.empty());
+  EXPECT_TRUE(imported->scene.notes.empty());
 }
 
 TEST_F(Importer, GltfSceneRefusesBrokenTexturesByName) {
@@ -422,7 +445,7 @@ TEST_F(Importer, GltfSceneDrawsAMultiPartModelWhole) {
   EXPECT_EQ(scene.objects.size(), 78u) << "82 nodes, 4 without a mesh (the root, the engine, two lights)";
   EXPECT_EQ(scene.mirrorCount(), 6u) << "two valve covers, two exhaust headers, the flywheel and the oil cap";
   EXPECT_EQ(scene.lights.size(), 2u);
-  EXPECT_TRUE(imported->notes.empty());
+  EXPECT_TRUE(imported->scene.notes.empty());
   // root > engine (matrix: up 1.2) > block (up 0.3) > left cylinder (-0.45, 0.8, 0) > left head (up 0.47)
   // > left spark plug (0.2, 0.2, 0) > left plug wire (up 0.08, turned about x): a torus about (-0.25, 3.05, 0).
   const SceneObject* wire = objectNamed(scene, "left plug wire");

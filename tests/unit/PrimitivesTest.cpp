@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
@@ -77,6 +78,42 @@ TEST(Primitives, UvSphereVerticesLieOnTheSphereWithOutwardUnitNormals) {
 }
 
 TEST(Primitives, UvSphereIsWatertight) { EXPECT_TRUE(isWatertight(primitives::uvSphere("s", 1.0f, 12, 6))); }
+
+namespace {
+
+// A sphere as modelling tools write it: a (slices + 1) × (stacks + 1) grid with a seam column, every quad two
+// triangles, so each pole row holds a line of vertices at one point and half its triangles have no area.
+Mesh gridSphere(int slices, int stacks, bool withHole) {
+  Mesh mesh;
+  for (int j = 0; j <= stacks; ++j)
+    for (int i = 0; i <= slices; ++i) {
+      const float phi = 3.14159265f * static_cast<float>(j) / static_cast<float>(stacks);
+      const float theta = 6.2831853f * static_cast<float>(i) / static_cast<float>(slices);
+      const float ring = j == 0 || j == stacks ? 0.0f : std::sin(phi);  // a pole row is one point exactly
+      const glm::vec3 p(ring * std::cos(theta), std::cos(phi), -ring * std::sin(theta));
+      mesh.vertices.push_back({p, p, {static_cast<float>(i) / static_cast<float>(slices), 0.0f}});
+    }
+  for (int j = 0; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      if (withHole && j == stacks / 2 && i == 0) continue;
+      const auto at = [&](int column, int row) { return static_cast<std::uint32_t>(row * (slices + 1) + column); };
+      for (std::uint32_t index : {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)})
+        mesh.indices.push_back(index);
+    }
+  return mesh;
+}
+
+}  // namespace
+
+TEST(Primitives, AGridSphereWithZeroAreaPoleTrianglesIsClosedAndOneWithAHoleIsNot) {
+  const Mesh sphere = gridSphere(16, 8, false);
+  std::size_t collapsed = 0;
+  for (std::size_t t = 0; t < sphere.triangleCount(); ++t) collapsed += glm::length(windingNormal(sphere, t)) < 1e-9f;
+  ASSERT_EQ(collapsed, 2u * 16u) << "the generator writes the pole quads as the tools do";
+  EXPECT_EQ(trianglesFacingAgainstNormals(sphere), 0u);
+  EXPECT_TRUE(isWatertight(sphere));
+  EXPECT_FALSE(isWatertight(gridSphere(16, 8, true))) << "a missing quad is a hole";
+}
 
 TEST(Primitives, UvSphereLatitudeRunsFromSouthPoleToNorthPole) {
   const Mesh mesh = primitives::uvSphere("s", 1.0f, 8, 4);

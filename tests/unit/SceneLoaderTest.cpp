@@ -377,3 +377,20 @@ TEST(SceneLoader, AnIncludesMirrorRuleOverridesTheGltfThresholds) {
   EXPECT_FALSE(named("engine/block")->mirror.has_value());
   EXPECT_EQ(scene->mirrorCount(), 10u) << "the engine's six chrome parts and its four copper ones";
 }
+
+// What an included glTF file holds that is not read is named with that file, not dropped with the include.
+TEST(SceneLoader, AnIncludedFilesNotesReachTheSceneWithItsName) {
+  const fs::path dir = fs::path(testing::TempDir()) / "specula-SceneLoader-include-notes";
+  fs::create_directories(dir);
+  std::ifstream source(fs::path(SPECULA_TEST_DATA_DIR) / "gltf" / "node-tree.gltf");
+  nlohmann::json gltf = nlohmann::json::parse(source);
+  gltf["extensionsUsed"] = {"KHR_materials_clearcoat"};
+  std::ofstream(dir / "clearcoat.gltf") << gltf.dump();
+  std::ofstream(dir / "scene.json") << R"({"specula_scene": 1, "camera": {"eye": [0, 2, 6], "target": [0, 0, 0]},
+      "includes": [{"name": "part", "file": "clearcoat.gltf"}]})";
+  Result<Scene> scene = loadSceneFile(dir / "scene.json");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  ASSERT_EQ(scene->notes.size(), 1u);
+  EXPECT_EQ(scene->notes[0], "clearcoat.gltf: extension KHR_materials_clearcoat is not read: what it adds is left out");
+  fs::remove_all(dir);
+}

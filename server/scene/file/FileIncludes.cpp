@@ -37,6 +37,7 @@ void readInclude(const JsonNode& node, const fs::path& baseDir, Scene& scene, Na
   Result<ImportedGltfScene> imported = importGltfScene(*path, choice);
   if (!imported) file.fail(imported.error());
   Scene& included = imported->scene;
+  for (const std::string& note : included.notes) scene.notes.push_back(file.string() + ": " + note);
   for (const Texture& texture : included.textures)
     if ((textures.texels += texture.texelCount()) > kMaxTexelsPerScene)
       file.fail("the scene's textures hold more than " + std::to_string(kMaxTexelsPerScene) +

@@ -44,8 +44,8 @@ Status placeCamera(const tinygltf::Model& model, const std::vector<NodeAttachmen
     return Error{"a node refers to camera " + std::to_string(placed->index) + ", but the file has " +
                  std::to_string(model.cameras.size())};
   } else if (model.cameras[static_cast<std::size_t>(placed->index)].type != "perspective") {
-    imported.notes.push_back("camera " + std::to_string(placed->index) +
-                             " is not perspective: the view frames the scene instead");
+    imported.scene.notes.push_back("camera " + std::to_string(placed->index) +
+                                   " is not perspective: the view frames the scene instead");
   } else {
     const glm::mat4 world(placed->world);
     const double yfov = model.cameras[static_cast<std::size_t>(placed->index)].perspective.yfov;

@@ -23,7 +23,7 @@ Status addLights(const tinygltf::Model& model, const std::vector<NodeAttachment>
   for (const auto& [index, world] : lights) {
     const tinygltf::Light& source = model.lights[static_cast<std::size_t>(index)];
     if (scene.lights.size() == kMaxLights) {
-      imported.notes.push_back("more than " + std::to_string(kMaxLights) + " lights: the rest are left out");
+      imported.scene.notes.push_back("more than " + std::to_string(kMaxLights) + " lights: the rest are left out");
       break;
     }
     Light light;
@@ -33,7 +33,7 @@ Status addLights(const tinygltf::Model& model, const std::vector<NodeAttachment>
       light.vector = glm::normalize(glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));  // it shines down -z
     } else {
       if (source.type == "spot")
-        imported.notes.push_back("light " + std::to_string(index) + " is a spot light: drawn as a point light");
+        imported.scene.notes.push_back("light " + std::to_string(index) + " is a spot light: drawn as a point light");
       light.kind = Light::Kind::Point;
       light.vector = glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     }

@@ -37,7 +37,8 @@ Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world) {
     return Error{"node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) +
                  ", but the file has " + std::to_string(model_.meshes.size())};
   if (!(std::abs(glm::determinant(glm::dmat3(world))) > 1e-18)) {
-    imported_.notes.push_back("node " + std::to_string(index) + " has a singular transform (a zero scale): not drawn");
+    imported_.scene.notes.push_back("node " + std::to_string(index) +
+                                    " has a singular transform (a zero scale): not drawn");
     return {};
   }
   const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(node.mesh)];
@@ -79,7 +80,7 @@ Status ObjectPlacer::addObject(Mesh part, int material) {
     object.mirror->curvature = MirrorCurvature::Mixed;
   } else if (converted->chrome) {
     scene.materials[converted->index].reflectivity = 0.0f;
-    imported_.notes.push_back(
+    imported_.scene.notes.push_back(
         "'" + object.name +
         "' has a mirror material but an open mesh (a mirror needs a closed one): drawn in its colour");
   }

@@ -1,5 +1,7 @@
 #include "scene/gltf/GltfScene.h"
 
+#include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -27,6 +29,31 @@ Result<std::size_t> chosenScene(const tinygltf::Model& model, const GltfSceneCho
   return chosen;
 }
 
+// What the file holds that this build does not play or read, named once each so nothing is left out in silence.
+void noteWhatIsNotRead(const tinygltf::Model& model, std::vector<std::string>& notes) {
+  const auto count = [](std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  if (!model.animations.empty())
+    notes.push_back(count(model.animations.size(), "animation", "animations") +
+                    " not played (glTF animations are not read yet): every node stays in its rest pose");
+  if (!model.skins.empty())
+    notes.push_back(count(model.skins.size(), "skin", "skins") +
+                    " not applied (skinning is not read yet): skinned meshes are drawn in their bind pose");
+  std::size_t morphing = 0;
+  for (const tinygltf::Mesh& mesh : model.meshes)
+    for (const tinygltf::Primitive& primitive : mesh.primitives) morphing += primitive.targets.empty() ? 0 : 1;
+  if (morphing > 0)
+    notes.push_back(count(morphing, "primitive has", "primitives have") +
+                    " morph targets, not applied (morph targets are not read yet): drawn in their base shape");
+  // The extensions the importer reads; KHR_texture_transform and KHR_mesh_quantization are named where used.
+  static const std::set<std::string, std::less<>> kRead = {"KHR_lights_punctual", "KHR_materials_unlit",
+                                                           "KHR_texture_transform", "KHR_mesh_quantization"};
+  for (const std::string& extension : model.extensionsUsed)
+    if (!kRead.contains(extension))
+      notes.push_back("extension " + extension + " is not read: what it adds is left out");
+}
+
 }  // namespace
 
 Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const DecodedImages& images,
@@ -37,8 +64,9 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
   Result<std::size_t> chosen = chosenScene(model, choice);
   if (!chosen) return Error{chosen.error()};
   if (Status named = checkMirrorRuleNames(model, choice.mirrors); !named) return Error{named.error()};
+  noteWhatIsNotRead(model, imported.scene.notes);
 
-  MaterialTable materials(model, images, choice.mirrors, imported.scene, imported.notes);
+  MaterialTable materials(model, images, choice.mirrors, imported.scene, imported.scene.notes);
   ObjectPlacer objects(model, materials, imported);
   std::vector<NodeAttachment> cameras, lights;  // in the order first met
   const Status walked = walkNodeTree(model, chosen.value(), [&](std::size_t index, const glm::dmat4& world) {

@@ -40,6 +40,7 @@ for target in "${targets[@]}"; do
   [[ -n ${FUZZ_SEED:-} ]] && runs+=(-seed="$FUZZ_SEED")
   [[ -f "$here/$target.dict" ]] && dictionary=(-dict="$here/$target.dict")
   echo "fuzzing $target for $seconds s"
+  touch "$build/logs/$target.started"  # findings of earlier runs, still in the folder, are not this run's
   # -timeout: a single input running 25 s is a hang; -rss_limit_mb: the decoders' own bounds stay well under it.
   "$build/fuzz/${target}_fuzzer" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 -print_final_stats=1 \
     -artifact_prefix="$findings/" "${dictionary[@]}" "${runs[@]}" "$corpus" "$here/corpus/$target" >"$log" 2>&1
@@ -47,7 +48,7 @@ for target in "${targets[@]}"; do
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
   edges=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
-  found=$(find "$findings" -type f | wc -l)
+  found=$(find "$findings" -type f -newer "$build/logs/$target.started" | wc -l)
   printf '%-14s %10s %14s %8s  %s\n' "$target" "${rate:-?}" "${executions:-?}" "${edges:-?}" "$found" >>"$build/summary.txt"
   if (( status != 0 || found > 0 )); then
     failed+=("$target")

@@ -5,15 +5,10 @@
 #include <thread>
 
 #include "OrbitCamera.h"
-#include "net/ServerOptions.h"
 
 namespace specula::app {
 
 namespace {
-
-// `specula bench soak` serves with the default write deadline; a stop must outlast it by a frame or two.
-const double kWriteDeadlineSeconds = std::chrono::duration<double>(net::ServerOptions{}.writeTimeout).count();
-constexpr double kDeadlineMarginSeconds = 5.0;
 
 // A cycle of complete settings, so every state comes back and its GL resources can be reused: methods,
 // search strategies and render sizes (resolution scale) that allocate different passes and targets.
@@ -115,9 +110,11 @@ Status SoakClients::act(int session, double seconds, client::ResumingClient& cli
     case SoakRole::Stopper: {
       ++stops_;
       state.nextEvent = seconds + timing_.stopEverySeconds;
-      const double stopFor = std::min(timing_.stopForSeconds, timing_.runSeconds - seconds - 1.0);
-      if (stopFor >= kWriteDeadlineSeconds + kDeadlineMarginSeconds) ++longStops_;
-      return stopReading(client, stopFor);
+      // A stopper drops nothing itself: a reconnect while it stopped is the server dropping it.
+      const int reconnectsBefore = client.reconnects();
+      Status stopped = stopReading(client, std::min(timing_.stopForSeconds, timing_.runSeconds - seconds - 1.0));
+      if (client.reconnects() > reconnectsBefore) ++stopsDropped_;
+      return stopped;
     }
     case SoakRole::Vanisher:
       ++drops_;
@@ -135,7 +132,7 @@ Status SoakClients::act(int session, double seconds, client::ResumingClient& cli
 SoakActions SoakClients::actions() const {
   int storms = 0;
   for (const SessionState& state : states_) storms = std::max(storms, state.stormsJoined);
-  return {storms, drops_.load(), stops_.load(), settingsSent_.load(), longStops_.load()};
+  return {storms, drops_.load(), stops_.load(), settingsSent_.load(), stopsDropped_.load()};
 }
 
 }  // namespace specula::app

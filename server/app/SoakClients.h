@@ -32,7 +32,7 @@ struct SoakTiming {
 
 struct SoakActions {  // what the clients did, for the report
   int storms = 0, drops = 0, stops = 0, settingsSent = 0;
-  int longStops = 0;  // stops that outlasted the server's write deadline by a margin
+  int stopsDropped = 0;  // stops during which the server dropped the connection (the client had to reconnect)
 };
 
 class SoakClients {
@@ -53,7 +53,7 @@ class SoakClients {
   };
   SoakTiming timing_;
   std::vector<SessionState> states_;
-  std::atomic<int> drops_{0}, stops_{0}, longStops_{0}, settingsSent_{0};
+  std::atomic<int> drops_{0}, stops_{0}, stopsDropped_{0}, settingsSent_{0};
 };
 
 }  // namespace specula::app

@@ -96,13 +96,12 @@ SoakVerdict judgeSoak(const SoakRun& run) {
                "reconnects",
                server.resumesRefused, refused),
         "the server's refused-resume count disagrees with the clients'");
-  // A stopped reader's thin pipe fills within a frame or two, so each stop that outlasts the server's write
-  // deadline ends in at least one dropped connection (the client resumes, fills the new one, and may be dropped again).
-  check(
-      server.writeTimeouts >= run.actions.longStops,
-      format("connections dropped at the write deadline %.0f: at least one for each of the %d stops that outlasted it",
-             server.writeTimeouts, run.actions.longStops),
-      "stopped readers were not dropped at the write deadline");
+  // Each stop the server ended is one write timeout at least; and some stop must have lasted long enough for
+  // one, or the deadline went untested (how many do depends on the frame rate: a frame or two fill the pipe).
+  check(server.writeTimeouts >= run.actions.stopsDropped && (run.actions.stops == 0 || run.actions.stopsDropped > 0),
+        format("connections dropped at the write deadline %.0f: at least the %d stops (of %d) the server ended",
+               server.writeTimeouts, run.actions.stopsDropped, run.actions.stops),
+        "the server's write timeouts disagree with the stopped readers'");
   check(run.afterClose && run.afterClose->sessions == 0.0,
         format("no session left open once the clients closed (%.0f)", run.afterClose ? run.afterClose->sessions : -1.0),
         "sessions stayed open after their clients closed");
@@ -195,7 +194,7 @@ std::string soakJson(const SoakRun& run, const SoakVerdict& verdict) {
        {{"storms", run.actions.storms},
         {"drops", run.actions.drops},
         {"stops", run.actions.stops},
-        {"stops_past_the_write_deadline", run.actions.longStops},
+        {"stops_the_server_ended", run.actions.stopsDropped},
         {"settings_changes", run.actions.settingsSent}}},
       {"samples", samples},
       {"trends",

@@ -16,7 +16,7 @@ std::vector<std::string> sceneList(const CommandLine& options, const std::vector
 }
 
 Result<std::vector<std::shared_ptr<const scene::Scene>>> loadScenes(const std::vector<std::string>& names,
-                                                                    const scene::GltfSceneChoice& choice) {
+                                                                    const SceneChoice& choice) {
   if (names.empty()) return Error{"--scenes names no scene"};
   std::vector<std::shared_ptr<const scene::Scene>> scenes;
   for (const std::string& name : names) {

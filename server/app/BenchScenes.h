@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "base/CommandLine.h"
+#include "app/SceneSource.h"
 #include "base/Result.h"
-#include "scene/GltfImporter.h"
 #include "scene/Scene.h"
 
 namespace specula::app {
@@ -16,6 +16,6 @@ std::vector<std::string> sceneList(const CommandLine& options, const std::vector
 
 // Loads every scene up front, so a typo fails before the long part.
 Result<std::vector<std::shared_ptr<const scene::Scene>>> loadScenes(const std::vector<std::string>& names,
-                                                                    const scene::GltfSceneChoice& choice = {});
+                                                                    const SceneChoice& choice = {});
 
 }  // namespace specula::app

@@ -39,7 +39,7 @@ CommandLine renderOptions() {
       {"method", "METHOD",
        "search | explosion-map (= search with --search explosion-map) | environment-map | raytrace | none", "search"},
   };
-  for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
+  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
   specs.push_back(samplesOption(math::kStillFrameSamples));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
@@ -206,9 +206,9 @@ int runRender(std::span<const std::string> arguments) {
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
   if (!time) return fail(time.error());
 
-  auto gltfChoice = parseGltfSceneOptions(options);
-  if (!gltfChoice) return fail(gltfChoice.error());
-  auto scene = loadScene(options.text("scene"), *gltfChoice);
+  auto sceneChoice = parseSceneChoice(options);
+  if (!sceneChoice) return fail(sceneChoice.error());
+  auto scene = loadScene(options.text("scene"), *sceneChoice);
   if (!scene) return fail(scene.error());
   std::string out = options.has("out") ? options.text("out") : defaultOutputName((*scene)->name);
   const std::string extension = std::filesystem::path(out).extension().string();

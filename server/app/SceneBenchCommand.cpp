@@ -39,7 +39,7 @@ CommandLine benchOptions() {
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
   };
-  for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
+  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(
@@ -107,9 +107,9 @@ int runSceneBench(std::span<const std::string> arguments) {
   // Check outputs and load every scene before the long part, so a typo fails at once.
   for (const char* output : {"csv", "json"})
     if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
-  auto gltfChoice = parseGltfSceneOptions(options);
-  if (!gltfChoice) return fail(gltfChoice.error());
-  auto loaded = loadScenes(names, *gltfChoice);
+  auto sceneChoice = parseSceneChoice(options);
+  if (!sceneChoice) return fail(sceneChoice.error());
+  auto loaded = loadScenes(names, *sceneChoice);
   if (!loaded) return fail(loaded.error());
   const std::vector<std::shared_ptr<const scene::Scene>>& scenes = *loaded;
   auto context = openGlContext(options.text("gl"));

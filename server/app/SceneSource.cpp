@@ -15,46 +15,57 @@ constexpr int kMaxGltfIndex = 1 << 20;
 
 }  // namespace
 
-std::vector<OptionSpec> gltfSceneOptions() {
+std::vector<OptionSpec> sceneChoiceOptions() {
   return {{"gltf-scene", "N", "with a glTF --scene: which of its scenes (index)", "the file's default scene"},
           {"camera", "N", "with a glTF --scene: which of its cameras (index)",
-           "the first on a node, else a view of everything"}};
+           "the first on a node, else a view of everything"},
+          {"environment", "sky|none|FILE",
+           "what the background and every mirror show where rays meet nothing: the procedural sky, the scene's "
+           "background colour, or an equirectangular PNG or JPEG",
+           "the scene's (sky for glTF files and scene files without a background)"}};
 }
 
-Result<scene::GltfSceneChoice> parseGltfSceneOptions(const CommandLine& options) {
-  scene::GltfSceneChoice choice;
+Result<SceneChoice> parseSceneChoice(const CommandLine& options) {
+  SceneChoice choice;
   for (const char* name : {"gltf-scene", "camera"}) {
     if (!options.has(name)) continue;
     auto index = options.integer(name, 0, kMaxGltfIndex);
     if (!index) return Error{index.error()};
-    (std::string(name) == "camera" ? choice.camera : choice.scene) = static_cast<std::size_t>(*index);
+    (std::string(name) == "camera" ? choice.gltf.camera : choice.gltf.scene) = static_cast<std::size_t>(*index);
   }
+  if (options.has("environment")) choice.environment = options.text("environment");
   return choice;
 }
 
-Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile,
-                                                      const scene::GltfSceneChoice& choice) {
-  if (auto builtin = scene::makeBuiltinScene(nameOrFile))
-    return std::make_shared<const scene::Scene>(std::move(*builtin));
+namespace {
+
+Result<scene::Scene> readScene(const std::string& nameOrFile, const scene::GltfSceneChoice& choice) {
+  if (auto builtin = scene::makeBuiltinScene(nameOrFile)) return std::move(*builtin);
   std::error_code error;
   if (!std::filesystem::exists(nameOrFile, error)) {
     std::string names;
     for (std::string_view name : scene::builtinSceneNames()) names += (names.empty() ? "" : ", ") + std::string(name);
     return Error{"scene '" + nameOrFile + "' is neither a built-in scene (" + names + ") nor an existing file"};
   }
-  std::shared_ptr<const scene::Scene> loaded;
   if (scene::isGltfFile(nameOrFile)) {
     auto imported = scene::importGltfScene(nameOrFile, choice);
     if (!imported) return Error{imported.error()};
-    loaded = std::make_shared<const scene::Scene>(std::move(imported->scene));
-  } else {
-    auto file = scene::loadSceneFile(nameOrFile);
-    if (!file) return Error{file.error()};
-    loaded = std::make_shared<const scene::Scene>(std::move(file.value()));
+    return std::move(imported->scene);
   }
+  return scene::loadSceneFile(nameOrFile);
+}
+
+}  // namespace
+
+Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile, const SceneChoice& choice) {
+  Result<scene::Scene> loaded = readScene(nameOrFile, choice.gltf);
+  if (!loaded) return Error{loaded.error()};
+  if (choice.environment)
+    if (Status chosen = scene::chooseEnvironment(*loaded, *choice.environment); !chosen)
+      return Error{"--environment: " + chosen.error()};
   for (const std::string& note : loaded->notes)
     std::fprintf(stderr, "specula: %s: %s\n", nameOrFile.c_str(), note.c_str());
-  return loaded;
+  return std::make_shared<const scene::Scene>(std::move(loaded).value());
 }
 
 }  // namespace specula::app

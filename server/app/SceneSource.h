@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,13 +11,18 @@
 
 namespace specula::app {
 
-// --gltf-scene and --camera: which scene and camera of a glTF file --scene names.
-std::vector<OptionSpec> gltfSceneOptions();
-Result<scene::GltfSceneChoice> parseGltfSceneOptions(const CommandLine& options);
+// How a --scene is taken: which scene and camera of a glTF file, and what rays that meet nothing see.
+struct SceneChoice {
+  scene::GltfSceneChoice gltf;
+  std::optional<std::string> environment;  // "sky", "none" or an image file; unset: the scene's own
+};
+
+// --gltf-scene, --camera and --environment.
+std::vector<OptionSpec> sceneChoiceOptions();
+Result<SceneChoice> parseSceneChoice(const CommandLine& options);
 
 // Resolves --scene: a built-in scene's name, a glTF file (.gltf or .glb: its scene, chosen by
-// `choice`; what the import read differently goes to stderr) or a JSON scene file.
-Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile,
-                                                      const scene::GltfSceneChoice& choice = {});
+// `choice`) or a JSON scene file; the scene's notes (what was read differently) go to stderr.
+Result<std::shared_ptr<const scene::Scene>> loadScene(const std::string& nameOrFile, const SceneChoice& choice = {});
 
 }  // namespace specula::app

@@ -48,7 +48,7 @@ CommandLine serveOptions() {
        "on SIGTERM: answer /readyz 503 and refuse new sessions for N s, then close every session (1001) and exit", "0"},
       {"public-metrics", "", "serve /metrics without the token (for a scraper inside a private network)", ""},
   };
-  for (OptionSpec& spec : gltfSceneOptions()) specs.push_back(std::move(spec));
+  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec :
        settingOptions(session::sessionSettingsSchema(), session::SessionSettings{}, {}, " (sessions' default)"))
     specs.push_back(std::move(spec));
@@ -127,9 +127,9 @@ int runServe(std::span<const std::string> arguments) {
   serverOptions.jsonDocuments["/settings-schema.json"] = session::settingsSchemaJson(sessionDefaults);
   if (auto problem = net::bindProblem(serverOptions)) return fail(*problem);  // before the slow scene and GL setup
 
-  auto gltfChoice = parseGltfSceneOptions(options);
-  if (!gltfChoice) return fail(gltfChoice.error());
-  auto scene = loadScene(options.text("scene"), *gltfChoice);
+  auto sceneChoice = parseSceneChoice(options);
+  if (!sceneChoice) return fail(sceneChoice.error());
+  auto scene = loadScene(options.text("scene"), *sceneChoice);
   if (!scene) return fail(scene.error());
 
   // Block the shutdown signals before any thread starts, so every thread inherits the mask and the main

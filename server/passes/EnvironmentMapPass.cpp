@@ -76,7 +76,7 @@ void EnvironmentMapPass::capture(const FrameContext& frame, std::size_t mirrorOb
   gl.DepthFunc(GL_LESS);
   gl.DepthMask(GL_TRUE);
   gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.ClearColor(frame.scene.background.x, frame.scene.background.y, frame.scene.background.z, 1.0f);
+  gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);  // alpha 0 where nothing is captured: the lookup adds the environment there
   capture_.use();
   capture_.set("eyePosition", centre);
   capture_.set("surfaceWeight", 1.0f);  // one bounce: a mirror seen in a mirror shows its own colour
@@ -131,6 +131,7 @@ void EnvironmentMapPass::execute(const FrameContext& frame) {
     gl.Enable(GL_BLEND);
     gl.BlendFunc(GL_ONE, GL_ONE);
     lookup_.use();
+    setEnvironment(lookup_, frame.scene, frame.textures);
     gl.ActiveTexture(GL_TEXTURE2);
     gl.BindTexture(GL_TEXTURE_CUBE_MAP, cube_.id());
     bindGBufferTextures(gl, resources);

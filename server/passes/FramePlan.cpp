@@ -163,7 +163,6 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
   if (settings.method == ReflectionMethod::None) return plan;
   const bool everything = settings.plan == PlanScope::Everything;
   for (const MirrorSlots& mirror : slots.mirrors) {
-    if (mirror.reflected.empty()) continue;
     if (!everything && !boundsInFrustum(worldBounds[mirror.mirrorObject], camera, aspect, 0.0f)) continue;
     const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
     const math::Bounds& mirrorBounds = worldBounds[mirror.mirrorObject];
@@ -172,8 +171,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
     const bool search = settings.method == ReflectionMethod::Search;
     PartMethod method =
         settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
-    // A mirror narrower than the budget moves no reflection by more than it, whatever it shows.
-    if (!everything && search && mirrorDiameterPixels(mirrorBounds, camera, frameSize) < settings.errorBudgetPixels)
+    // A mirror narrower than the budget moves no reflection by more than it, whatever it shows; one with
+    // nothing to reflect shows the environment alone.
+    if (mirror.reflected.empty() ||
+        (!everything && search && mirrorDiameterPixels(mirrorBounds, camera, frameSize) < settings.errorBudgetPixels))
       method = PartMethod::OwnColour;
     // A part that faces away stays in the plan (the mirror's other parts share its stencil and
     // composite) but draws nothing.

@@ -17,7 +17,8 @@ namespace specula::passes {
 enum class PartMethod {
   VirtualObjects,  // search every reflected vertex, tessellate, rasterize the virtual objects
   RayCast,         // cast each of its pixels' reflected rays against the objects' meshes
-  OwnColour,       // smaller on screen than the error budget: its own colour and the background it reflects
+  OwnColour,       // nothing to reflect, or smaller on screen than the error budget: its colour and the environment it
+                   // reflects
   EnvironmentMap,  // everything it reflects is far: a cube map from its centre, ray-cast where that is off by more than
                    // the budget
 };

@@ -39,8 +39,8 @@ GpuTextures::GpuTextures(const gl::GlApi& gl, const std::vector<scene::Texture>&
   gl.BindTexture(GL_TEXTURE_2D, 0);
 }
 
-void GpuTextures::bind(std::optional<std::uint32_t> index) const {
-  gl_->ActiveTexture(GL_TEXTURE0 + kMaterialTextureUnit);
+void GpuTextures::bindOn(GLuint unit, std::optional<std::uint32_t> index) const {
+  gl_->ActiveTexture(GL_TEXTURE0 + unit);
   gl_->BindTexture(GL_TEXTURE_2D, index ? textures_.at(*index).id() : white_.id());
   gl_->ActiveTexture(GL_TEXTURE0);
 }

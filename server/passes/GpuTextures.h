@@ -8,6 +8,7 @@
 
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
+#include "common/environment-radiance.glsl"
 #include "scene/Scene.h"
 
 namespace specula::passes {
@@ -21,10 +22,14 @@ class GpuTextures {
 
   // Binds texture `index` (a 1×1 white one when nullopt, so the sampler is always complete) on
   // kMaterialTextureUnit; leaves GL_TEXTURE0 active.
-  void bind(std::optional<std::uint32_t> index) const;
+  void bind(std::optional<std::uint32_t> index) const { bindOn(kMaterialTextureUnit, index); }
+  // The same on ENVIRONMENT_TEXTURE_UNIT, where shaders/common/environment.glsl samples the environment image.
+  void bindEnvironment(std::optional<std::uint32_t> index) const { bindOn(ENVIRONMENT_TEXTURE_UNIT, index); }
   std::size_t size() const { return textures_.size(); }
 
  private:
+  void bindOn(GLuint unit, std::optional<std::uint32_t> index) const;
+
   const gl::GlApi* gl_;
   std::vector<gl::GlTexture> textures_;
   gl::GlTexture white_;

@@ -17,8 +17,11 @@ Result<std::unique_ptr<ScenePass>> ScenePass::create(const gl::GlApi& gl) {
   auto patches = gl::ShaderProgram::build(
       gl, {"common/bezier-patch.vert", "common/bezier-patch.tesc", "common/bezier-patch.tese", "scene/scene.frag"});
   if (!patches) return Error{patches.error()};
-  return std::unique_ptr<ScenePass>(
-      new ScenePass(gl, std::move(program.value()), std::move(quadric.value()), std::move(patches.value())));
+  auto environment =
+      gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "scene/environment-background.frag"});
+  if (!environment) return Error{environment.error()};
+  return std::unique_ptr<ScenePass>(new ScenePass(gl, std::move(program.value()), std::move(quadric.value()),
+                                                  std::move(patches.value()), std::move(environment.value())));
 }
 
 void ScenePass::execute(const FrameContext& frame) {
@@ -77,6 +80,20 @@ void ScenePass::execute(const FrameContext& frame) {
     } else {
       frame.meshes.draw(object.mesh);
     }
+  }
+  // The environment where nothing was drawn: the far plane the triangle lies on passes only there.
+  if (frame.scene.environment.kind != scene::EnvironmentKind::Colour) {
+    environment_.use();
+    setEnvironment(environment_, frame.scene, frame.textures);
+    environment_.set("clipToWorld", glm::inverse(frame.view.worldToClip()));
+    environment_.set("frameSize", glm::vec2(frame.target.width(), frame.target.height()));
+    gl.StencilFunc(GL_ALWAYS, 0, 0xFF);
+    gl.DepthFunc(GL_LEQUAL);
+    gl.DepthMask(GL_FALSE);
+    gl.BindVertexArray(emptyVertexArray_.id());
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.DepthMask(GL_TRUE);
+    gl.DepthFunc(GL_LESS);
   }
   gl.Disable(GL_STENCIL_TEST);
 }

@@ -20,14 +20,17 @@ class ScenePass final : public Pass {
   void execute(const FrameContext& frame) override;
 
  private:
-  ScenePass(const gl::GlApi& gl, gl::ShaderProgram program, gl::ShaderProgram quadric, gl::ShaderProgram patches)
+  ScenePass(const gl::GlApi& gl, gl::ShaderProgram program, gl::ShaderProgram quadric, gl::ShaderProgram patches,
+            gl::ShaderProgram environment)
       : program_(std::move(program)),
         quadric_(std::move(quadric)),
         patches_(std::move(patches)),
+        environment_(std::move(environment)),
         emptyVertexArray_(gl) {}
   gl::ShaderProgram program_;
-  gl::ShaderProgram quadric_;  // exact quadrics inside their proxy boxes
-  gl::ShaderProgram patches_;  // parametric meshes, tessellated for the view
+  gl::ShaderProgram quadric_;      // exact quadrics inside their proxy boxes
+  gl::ShaderProgram patches_;      // parametric meshes, tessellated for the view
+  gl::ShaderProgram environment_;  // the sky or image behind everything
   gl::GlVertexArray emptyVertexArray_;
 };
 

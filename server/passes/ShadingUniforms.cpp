@@ -32,6 +32,12 @@ void setMaterial(const gl::ShaderProgram& program, const scene::Material& materi
   }
 }
 
+void setEnvironment(const gl::ShaderProgram& program, const scene::Scene& scene, const GpuTextures& textures) {
+  program.set("environmentKind", static_cast<int>(scene.environment.kind));
+  program.set("environmentColour", scene.background);
+  textures.bindEnvironment(scene.environment.image);
+}
+
 void setRayCone(const gl::ShaderProgram& program, const FrameContext& frame) {
   program.set("viewForward", frame.view.forward());
   program.set("pixelAngle", frame.view.pixelAngle(frame.target.height()));

@@ -47,13 +47,17 @@ Result<std::unique_ptr<VirtualObjectsPass>> VirtualObjectsPass::create(const gl:
   auto uncoveredPixel =
       gl::ShaderProgram::build(gl, {"virtual-objects/uncovered-pixel.vert", "virtual-objects/ray-cast.frag"});
   if (!uncoveredPixel) return Error{uncoveredPixel.error()};
+  auto reflectedEnvironment =
+      gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/reflected-environment.frag"});
+  if (!reflectedEnvironment) return Error{reflectedEnvironment.error()};
   auto composite =
       gl::ShaderProgram::build(gl, {"common/fullscreen-triangle.vert", "virtual-objects/reflection-composite.frag"});
   if (!composite) return Error{composite.error()};
   return std::unique_ptr<VirtualObjectsPass>(new VirtualObjectsPass(
       gl, std::move(objects.value()), std::move(tessellated.value()), std::move(region.value()),
       std::move(rayCast.value()), std::move(rayCastTiles.value()), std::move(classifyTiles.value()),
-      std::move(findUncovered.value()), std::move(uncoveredPixel.value()), std::move(composite.value())));
+      std::move(findUncovered.value()), std::move(uncoveredPixel.value()), std::move(reflectedEnvironment.value()),
+      std::move(composite.value())));
 }
 
 void VirtualObjectsPass::drawMesh(const FrameContext& frame, const ReflectionSlotRange& range,
@@ -358,6 +362,19 @@ VirtualObjectsPass::PixelRect VirtualObjectsPass::framePixels(const glm::vec4& r
   return {low, glm::clamp(glm::ivec2(glm::ceil(glm::vec2(rect.z, rect.w))), low, size)};
 }
 
+void VirtualObjectsPass::drawReflectedEnvironment(const FrameContext& frame, const MirrorSlots& mirror,
+                                                  float reflectivity) const {
+  const gl::GlApi& gl = frame.gl;
+  reflectedEnvironment_.use();
+  reflectedEnvironment_.set("layer", mirror.layer);
+  reflectedEnvironment_.set("reflectivity", reflectivity);
+  gl.BindVertexArray(emptyVertexArray_.id());
+  gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl.DepthMask(GL_FALSE);  // the mirror's depth stays at the far plane for its virtual objects
+  gl.DepthFunc(GL_ALWAYS);
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
 void VirtualObjectsPass::resetMirrorDepth(const FrameContext& frame) const {
   // Virtual objects lie behind the mirror's surface: its pixels start at the far plane.
   const gl::GlApi& gl = frame.gl;
@@ -410,6 +427,11 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
   bindGBufferTextures(gl, frame.reflections);
+  reflectedEnvironment_.use();
+  setGBufferSamplers(reflectedEnvironment_);
+  setGBufferPixelMapping(reflectedEnvironment_, frame.reflections);
+  reflectedEnvironment_.set("eyePosition", frame.pose.camera.eye);
+  setEnvironment(reflectedEnvironment_, frame.scene, frame.textures);
   classifyCastTiles(frame);
   for (const gl::ShaderProgram* objects : {&objects_, &tessellated_}) {
     objects->use();
@@ -449,15 +471,16 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
       scissorToMirror(mirror->mirrorObject);
       resetMirrorDepth(frame);
     }
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
+    drawReflectedEnvironment(frame, *mirror, reflectivity);
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
     setForBoth("layer", mirror->layer);
     setForBoth("mirrorRect", frame.reflections.coveredFramePixels(mirror->layer));
     setForBoth("everyCornerReflected", mirror->kind == scene::SurfaceKind::Convex ? 0 : 1);
-    setForBoth("reflectivity", frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity);
+    setForBoth("reflectivity", reflectivity);
     switch (planned.method) {
-      case PartMethod::OwnColour:  // the composite adds the background it reflects
+      case PartMethod::OwnColour:  // the composite adds the environment it reflects, drawn above
         break;
       case PartMethod::RayCast: rayCastPart(frame, partIndex); break;
       case PartMethod::VirtualObjects:
@@ -483,10 +506,8 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   for (const PlannedMirror& planned : frame.plan.mirrors) {
     const MirrorSlots* mirror = planned.slots;
     if (mirror->part != 0) continue;  // once per mirror
-    const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
     gl.StencilFunc(GL_EQUAL, mirror->stencil, 0xFF);
     scissorToMirror(mirror->mirrorObject);
-    composite_.set("reflectedBackground", reflectivity * frame.scene.background);
     // The environment map is chosen for one-part mirrors only: part 0 is the mirror.
     const bool environment = planned.method == PartMethod::EnvironmentMap;
     composite_.set("environmentLayer", environment ? mirror->layer : -1);

@@ -34,7 +34,7 @@ class VirtualObjectsPass final : public Pass {
   VirtualObjectsPass(const gl::GlApi& gl, gl::ShaderProgram objects, gl::ShaderProgram tessellated,
                      gl::ShaderProgram region, gl::ShaderProgram rayCast, gl::ShaderProgram rayCastTiles,
                      gl::ShaderProgram classifyTiles, gl::ShaderProgram findUncovered, gl::ShaderProgram uncoveredPixel,
-                     gl::ShaderProgram composite)
+                     gl::ShaderProgram reflectedEnvironment, gl::ShaderProgram composite)
       : gl_(&gl),
         objects_(std::move(objects)),
         tessellated_(std::move(tessellated)),
@@ -44,6 +44,7 @@ class VirtualObjectsPass final : public Pass {
         classifyTiles_(std::move(classifyTiles)),
         findUncovered_(std::move(findUncovered)),
         uncoveredPixel_(std::move(uncoveredPixel)),
+        reflectedEnvironment_(std::move(reflectedEnvironment)),
         composite_(std::move(composite)),
         emptyVertexArray_(gl),
         framebuffer_(gl),
@@ -68,6 +69,8 @@ class VirtualObjectsPass final : public Pass {
   void bindReflectionBuffer(const FrameContext& frame);
   // Sets the depth inside the mirror's stencil to the far plane.
   void resetMirrorDepth(const FrameContext& frame) const;
+  // Writes what the part reflects from the environment over its pixels (alpha 0, depth untouched).
+  void drawReflectedEnvironment(const FrameContext& frame, const MirrorSlots& mirror, float reflectivity) const;
   // Casts the part's reflected rays against one object's mesh (the mirror's own where it sees itself)
   // and draws the nearest hits at their depth.
   void rayCast(const FrameContext& frame, const MirrorSlots& mirror, std::size_t object) const;
@@ -105,11 +108,12 @@ class VirtualObjectsPass final : public Pass {
   gl::ShaderProgram objects_;      // scene meshes at their search slots
   gl::ShaderProgram tessellated_;  // the tessellation pass's finished triangles
   gl::ShaderProgram region_;
-  gl::ShaderProgram rayCast_;         // over a full-screen triangle
-  gl::ShaderProgram rayCastTiles_;    // over the tiles an object's list names
-  gl::ShaderProgram classifyTiles_;   // lists each object's tiles
-  gl::ShaderProgram findUncovered_;   // lists a part's uncovered pixels
-  gl::ShaderProgram uncoveredPixel_;  // ray-cast.frag at the listed pixels, drawn as points
+  gl::ShaderProgram rayCast_;               // over a full-screen triangle
+  gl::ShaderProgram rayCastTiles_;          // over the tiles an object's list names
+  gl::ShaderProgram classifyTiles_;         // lists each object's tiles
+  gl::ShaderProgram findUncovered_;         // lists a part's uncovered pixels
+  gl::ShaderProgram uncoveredPixel_;        // ray-cast.frag at the listed pixels, drawn as points
+  gl::ShaderProgram reflectedEnvironment_;  // what a part reflects where nothing lands, under its virtual objects
   gl::ShaderProgram composite_;
   gl::GlVertexArray emptyVertexArray_;  // the full-screen triangle needs no attributes
   gl::GlFramebuffer framebuffer_;       // the reflection buffer with the frame's depth and stencil

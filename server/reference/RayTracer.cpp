@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "math/SamplePattern.h"
+#include "reference/EnvironmentRadiance.h"
 #include "reference/EmbreeError.h"
 #include "reference/PosedScene.h"
 #include "reference/PrimaryRays.h"
@@ -51,7 +52,7 @@ glm::vec3 shadeHit(const Tracing& tracing, const SurfaceHit& hit, const Ray& ray
 glm::vec3 reflectedColor(const Tracing& tracing, const Ray& ray, const RayCone& cone, int bounce,
                          const Departure* departure) {
   const auto hit = tracing.posed.intersect(ray, kSeenInMirrors, departure);
-  return hit ? shadeHit(tracing, *hit, ray, cone, bounce) : tracing.scene.background;
+  return hit ? shadeHit(tracing, *hit, ray, cone, bounce) : environmentRadiance(tracing.scene, ray.direction);
 }
 
 // Linear colour of a hit reached after `bounce` reflections.
@@ -148,8 +149,8 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
         const Ray primary{rays.origin(), glm::vec3(direction)};
         const auto hit = tracing.posed.intersect(primary, kSeenDirectly, nullptr);
         if (hit && scene_->objects[hit->object].mirror) ++mirrorSamples;
-        sum +=
-            hit ? shadeHit(tracing, *hit, primary, {0.0, glm::dot(direction, rays.forward())}, 0) : scene_->background;
+        sum += hit ? shadeHit(tracing, *hit, primary, {0.0, glm::dot(direction, rays.forward())}, 0)
+                   : environmentRadiance(*scene_, primary.direction);
       }
       image.mirrorMask[pixel] = 2 * mirrorSamples > samples.size() ? 1 : 0;
       writeSrgb8(sum / static_cast<float>(samples.size()), &image.rgba[4 * pixel]);

@@ -42,8 +42,8 @@ struct ReferenceImage {
 // Textures are filtered over the pixel's ray cone (shading.glsl's pixelFootprint). At a hit: the colour of
 // shaders/common/shading.glsl; at a mirror (SceneObject::mirror with reflectivity r > 0, bounces left)
 // (1 − r) · that colour + r · the colour seen along the ray reflected about the surface normal;
-// nothing hit: the scene background. Colours are linear until the final sRGB encoding.
-// Reflected rays see only objects with SceneObject::reflected, as the reflection methods do.
+// nothing hit: the scene's environment (reference/EnvironmentRadiance). Colours are linear until the final sRGB
+// encoding. Reflected rays see only objects with SceneObject::reflected, as the reflection methods do.
 class RayTracer {
  public:
   // `scene` must pass scene::sceneProblem(). Fails when Embree cannot create a device.

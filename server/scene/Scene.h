@@ -5,6 +5,7 @@
 
 #include "math/Camera.h"
 #include "scene/Animation.h"
+#include "scene/Environment.h"
 #include "scene/Light.h"
 #include "scene/Material.h"
 #include "scene/Mesh.h"
@@ -27,7 +28,8 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Light> lights;
   glm::vec3 ambient{0.05f};    // linear RGB added to every lit surface
-  glm::vec3 background{0.0f};  // linear RGB
+  glm::vec3 background{0.0f};  // linear RGB: the environment when it is a colour
+  Environment environment;     // what rays that meet nothing see
   math::Camera camera;         // default camera (rest pose of the camera animation, if any)
   std::vector<Animation> animations;
   // What loading read differently from the files or left out, one line each, for the user: printed when

@@ -153,6 +153,9 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
   }
   if (!inUnitRange(scene.ambient) || !inUnitRange(scene.background))
     return "ambient and background must be finite, non-negative";
+  if ((scene.environment.kind == EnvironmentKind::Image) !=
+      (scene.environment.image && *scene.environment.image < scene.textures.size()))
+    return "an environment image must name one of the scene's textures, and only an image environment names one";
   if (auto problem = math::cameraProblem(scene.camera)) return "default " + *problem;
 
   for (std::size_t a = 0; a < scene.animations.size(); ++a) {

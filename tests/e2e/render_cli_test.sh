@@ -25,6 +25,9 @@ check "every built-in scene renders" bash -c "for s in \$('$specula' scenes | aw
 fails_with "an unknown scene lists the built-ins" "neither a built-in scene (checker-sphere" render --scene no-such-scene
 fails_with "a bad size names the option" "--size expects WIDTHxHEIGHT" render --size 640by480
 fails_with "a bad vector names the option" "--eye expects three comma-separated numbers" render --eye 1,2
+fails_with "a missing environment image is named with the choices" \
+  "--environment: 'no-such-sky.jpg' is neither sky, none nor an image this build reads: no-such-sky.jpg" \
+  render --environment no-such-sky.jpg
 fails_with "eye on target is refused" "bad camera: camera eye and target coincide" render --eye 0,0,0 --target 0,0,0
 fails_with "an unknown output format is refused" "--out must end in .png, .jpg or .jpeg" render --out "$work/f.bmp"
 fails_with "an unknown option is refused" "unknown option --colour" render --colour red

@@ -126,8 +126,11 @@ TEST(FramePlan, ObjectsMarkedNotReflectedGetNoSlots) {
   EXPECT_TRUE(slots.mirrors[0].reflected.empty());
   EXPECT_EQ(slots.slotCount, 0u);
   const scene::ScenePose pose = scene::ScenePose::at(scene, 0.0);
-  EXPECT_EQ(names(passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(480, 480), {}).passes),
-            std::vector<std::string_view>{"scene"});
+  // Nothing to search: the mirror is planned for the environment it reflects alone.
+  const passes::FramePlan plan = passes::planFrame(slots, pose, worldBounds(scene, pose), glm::ivec2(480, 480), {});
+  EXPECT_EQ(names(plan.passes), (std::vector<std::string_view>{"scene", "mirror-gbuffer", "virtual-objects"}));
+  ASSERT_EQ(plan.mirrors.size(), 1u);
+  EXPECT_EQ(plan.mirrors[0].method, passes::PartMethod::OwnColour);
 }
 
 TEST(FrustumTest, BoxJustOutsideTheWidenedSideIsCulledAndInsideIsKept) {

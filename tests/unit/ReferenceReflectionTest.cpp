@@ -155,6 +155,7 @@ class ReferenceCheckerSphere : public ::testing::Test {
   static void SetUpTestSuite() {
     auto built = scene::makeBuiltinScene("checker-sphere");
     ASSERT_TRUE(built.has_value());
+    built->environment.kind = scene::EnvironmentKind::Colour;  // black past the floor: every pixel has a known byte
     auto tracer = reference::RayTracer::create(std::make_shared<const scene::Scene>(std::move(*built)));
     ASSERT_TRUE(tracer) << tracer.error();
     auto rendered = (*tracer)->render(scene::ScenePose::at((*tracer)->scene(), 0.0), {kWidth, kHeight, 1, 0});

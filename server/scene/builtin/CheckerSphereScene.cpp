@@ -10,7 +10,7 @@ namespace {
 Scene checkerSphere(bool exactSurface) {
   Scene scene;
   scene.ambient = glm::vec3(0.0f);
-  scene.background = glm::vec3(0.0f);
+  scene.environment.kind = EnvironmentKind::Sky;  // the chrome sphere reflects a sky, not a black disc
   scene.camera = {{1.0f, 3.0f, 3.5f}, {0.0f, -0.3f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};
 
   const std::uint32_t sphere =

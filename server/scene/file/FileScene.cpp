@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "scene/AssetFiles.h"
+#include "scene/Environment.h"
 #include "scene/SceneChecks.h"
 #include "scene/SceneLoader.h"
 #include "scene/file/FileAnimations.h"
@@ -24,6 +26,26 @@ namespace specula::scene::file {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// "sky", "none" (the background colour) or {"image": "file.jpg"}: an equirectangular PNG or JPEG beside the scene.
+void readEnvironment(const JsonNode& node, const fs::path& baseDir, Scene& scene) {
+  if (node.isString()) {
+    if (node.string() != "sky" && node.string() != "none")
+      node.fail("unknown environment " + JsonNode::quoted(node.string()) +
+                "; use \"sky\", \"none\" or {\"image\": \"file.jpg\"}");
+    scene.environment.kind = node.string() == "sky" ? EnvironmentKind::Sky : EnvironmentKind::Colour;
+    return;
+  }
+  node.expectObject({"image"});
+  const JsonNode file = node.at("image");
+  Result<fs::path> path = resolveInside(baseDir, file.string());
+  if (!path) file.fail(path.error());
+  if (Status used = useEnvironmentImage(scene, *path); !used) file.fail(used.error());
+}
+
+}  // namespace
+
 Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defaultName) {
   // The version comes first so a newer file fails on its version, not on keys this build does not know.
   const std::optional<JsonNode> version = root.find("specula_scene");
@@ -33,12 +55,13 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
       number != kSceneFormatVersion)
     version->fail("unsupported scene format version " + std::to_string(number) + "; this build reads version " +
                   std::to_string(kSceneFormatVersion));
-  root.expectObject({"specula_scene", "name", "background", "ambient", "camera", "meshes", "materials", "objects",
-                     "includes", "lights", "animations"});
+  root.expectObject({"specula_scene", "name", "background", "environment", "ambient", "camera", "meshes", "materials",
+                     "objects", "includes", "lights", "animations"});
   Scene scene;
   const std::optional<JsonNode> name = root.find("name");
   scene.name = name ? name->string() : std::move(defaultName);
-  if (const auto background = root.find("background")) scene.background = readColor(*background);
+  const std::optional<JsonNode> background = root.find("background");
+  if (background) scene.background = readColor(*background);
   if (const auto ambient = root.find("ambient")) scene.ambient = readColor(*ambient);
   const JsonNode camera = root.at("camera");
   camera.expectObject({"eye", "target", "up", "fov"});
@@ -79,6 +102,9 @@ Scene readScene(const JsonNode& root, const fs::path& baseDir, std::string defau
                      std::to_string(scene.triangleCount()) + " triangles, more than the limits of " +
                      std::to_string(kMaxVerticesPerScene) + " and " + std::to_string(kMaxTrianglesPerScene));
   }
+  // The sky unless the file asks for something else; a file that sets only a background colour keeps it.
+  if (const auto environment = root.find("environment")) readEnvironment(*environment, baseDir, scene);
+  else if (!background) scene.environment.kind = EnvironmentKind::Sky;
   if (const auto lights = root.find("lights"))
     for (const JsonNode& node : lights->array(0, kMaxLights)) scene.lights.push_back(readLight(node));
   if (const auto animations = root.find("animations"))

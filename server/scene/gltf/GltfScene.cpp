@@ -60,7 +60,8 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
                                          const GltfSceneChoice& choice, std::string name) {
   ImportedGltfScene imported;
   imported.scene.name = std::move(name);
-  imported.scene.background = {0.05f, 0.06f, 0.08f};
+  imported.scene.background = {0.05f, 0.06f, 0.08f};       // with --environment none
+  imported.scene.environment.kind = EnvironmentKind::Sky;  // as glTF viewers light and reflect one by default
   Result<std::size_t> chosen = chosenScene(model, choice);
   if (!chosen) return Error{chosen.error()};
   if (Status named = checkMirrorRuleNames(model, choice.mirrors); !named) return Error{named.error()};

@@ -119,7 +119,7 @@ std::vector<ReflectionSetting> declareSettings() {
       bind(choiceSetting(kPlanGroup, "uncovered",
                          "a searched mirror's pixels no virtual object covered (silhouettes, rims)",
                          {{"ray-cast", "cast their reflected rays", "UNCOVERED_RAY_CAST"},
-                          {"background", "show the background", "UNCOVERED_BACKGROUND"}},
+                          {"background", "show the environment they reflect", "UNCOVERED_BACKGROUND"}},
                          "uncovered"),
            &R::rayCastUncovered, {true, false}),
 

@@ -32,7 +32,7 @@ CommandLine accuracyBenchOptions() {
       "searches per frame. Writes DIR/accuracy.csv, .json, .md (a Markdown table), .gp (a gnuplot\n"
       "script, data inline) and the plot it draws, DIR/accuracy.png and .svg: mirror mismatch against\n"
       "frame time with the Pareto front marked.",
-      {
+      withSceneChoice({
           {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
           {"size", "WxH", "frame size in pixels", "640x480"},
           {"poses", "N", "camera-path poses per setting, each timed and compared", std::to_string(defaults.poses)},
@@ -42,7 +42,7 @@ CommandLine accuracyBenchOptions() {
           {"out", "DIR", "output folder, created if missing", "accuracy"},
           {"no-plot", "", "skip the PNG and SVG (no gnuplot needed); the .gp script is still written", ""},
           glOption(),
-      });
+      }));
 }
 
 }  // namespace
@@ -78,7 +78,9 @@ int runAccuracyBench(std::span<const std::string> arguments) {
   const auto output = [&](const char* extension) { return (folder / ("accuracy." + std::string(extension))).string(); };
   for (const char* extension : {"csv", "json", "md", "gp"})
     if (Status status = checkWritable(output(extension)); !status) return fail(status.error());
-  auto scene = loadScene(options.text("scene"));
+  auto sceneChoice = parseSceneChoice(options);
+  if (!sceneChoice) return fail(sceneChoice.error());
+  auto scene = loadScene(options.text("scene"), *sceneChoice);
   if (!scene) return fail(scene.error());
   auto context = openGlContext(options.text("gl"));
   if (!context) return fail(context.error());

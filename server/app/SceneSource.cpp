@@ -25,6 +25,11 @@ std::vector<OptionSpec> sceneChoiceOptions() {
            "the scene's (sky for glTF files and scene files without a background)"}};
 }
 
+std::vector<OptionSpec> withSceneChoice(std::vector<OptionSpec> specs) {
+  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
+  return specs;
+}
+
 Result<SceneChoice> parseSceneChoice(const CommandLine& options) {
   SceneChoice choice;
   for (const char* name : {"gltf-scene", "camera"}) {

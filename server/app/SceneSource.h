@@ -20,6 +20,8 @@ struct SceneChoice {
 // --gltf-scene, --camera and --environment.
 std::vector<OptionSpec> sceneChoiceOptions();
 Result<SceneChoice> parseSceneChoice(const CommandLine& options);
+// `specs` and sceneChoiceOptions(), for a command's option table.
+std::vector<OptionSpec> withSceneChoice(std::vector<OptionSpec> specs);
 
 // Resolves --scene: a built-in scene's name, a glTF file (.gltf or .glb: its scene, chosen by
 // `choice`) or a JSON scene file; the scene's notes (what was read differently) go to stderr.

@@ -34,7 +34,7 @@ CommandLine serveBenchOptions() {
       "(docker/haproxy/specula.cfg; HAProxy must be installed) and runs the clients through its front: the\n"
       "table adds how the sessions spread over the instances, and a last run kills one instance a third of\n"
       "the way in and reports how many sessions reconnected and resumed and the longest gap in their frames.",
-      {
+      withSceneChoice({
           {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
           {"sessions", "LIST", "comma-separated session counts", "1,4,16"},
           {"sizes", "LIST", "comma-separated frame sizes", "640x360,1280x720"},
@@ -47,7 +47,7 @@ CommandLine serveBenchOptions() {
           {"csv", "FILE", "CSV output, one row per configuration", "serve.csv"},
           {"json", "FILE", "JSON output", "serve.json"},
           glOption(),
-      });
+      }));
 }
 
 constexpr CommandFailure fail{"specula bench serve"};
@@ -78,7 +78,9 @@ int runServeBench(std::span<const std::string> arguments) {
   if (!sizes) return fail(sizes.error());
   for (const char* output : {"csv", "json"})
     if (Status status = checkWritable(options.text(output)); !status) return fail(status.error());
-  auto scene = loadScene(options.text("scene"));
+  auto sceneChoice = parseSceneChoice(options);
+  if (!sceneChoice) return fail(sceneChoice.error());
+  auto scene = loadScene(options.text("scene"), *sceneChoice);
   if (!scene) return fail(scene.error());
 
   auto instances = options.integer("instances", 0, 16);
@@ -112,6 +114,10 @@ int runServeBench(std::span<const std::string> arguments) {
     clusterOptions.serveArguments = {
         "--scene",          options.text("scene"),          "--max-sessions", std::to_string(maxSessions + 4),
         "--render-threads", std::to_string(*renderThreads), "--gl",           options.text("gl")};
+    for (const char* name : {"gltf-scene", "camera", "environment"})  // each instance takes the scene as given here
+      if (options.has(name))
+        clusterOptions.serveArguments.insert(clusterOptions.serveArguments.end(),
+                                             {"--" + std::string(name), options.text(name)});
     std::fprintf(stderr, "bench serve: starting %d instances and HAProxy ...\n", *instances);
     auto started = LoopbackCluster::start(clusterOptions);
     if (!started) return fail(started.error());

@@ -39,7 +39,7 @@ CommandLine renderOptions() {
       {"method", "METHOD",
        "search | explosion-map (= search with --search explosion-map) | environment-map | raytrace | none", "search"},
   };
-  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
+  specs = withSceneChoice(std::move(specs));
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
   specs.push_back(samplesOption(math::kStillFrameSamples));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});

@@ -39,7 +39,7 @@ CommandLine benchOptions() {
       {"json", "FILE", "JSON output", "bench.json"},
       glOption(),
   };
-  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
+  specs = withSceneChoice(std::move(specs));
   for (OptionSpec& spec : searchOptions()) specs.push_back(std::move(spec));
   for (OptionSpec& spec : planOptions()) specs.push_back(std::move(spec));
   return CommandLine(

@@ -13,8 +13,6 @@ namespace {
 
 constexpr int kMaxGltfIndex = 1 << 20;
 
-}  // namespace
-
 std::vector<OptionSpec> sceneChoiceOptions() {
   return {{"gltf-scene", "N", "with a glTF --scene: which of its scenes (index)", "the file's default scene"},
           {"camera", "N", "with a glTF --scene: which of its cameras (index)",
@@ -24,6 +22,8 @@ std::vector<OptionSpec> sceneChoiceOptions() {
            "background colour, or an equirectangular PNG or JPEG",
            "the scene's (sky for glTF files and scene files without a background)"}};
 }
+
+}  // namespace
 
 std::vector<OptionSpec> withSceneChoice(std::vector<OptionSpec> specs) {
   for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));

@@ -17,11 +17,9 @@ struct SceneChoice {
   std::optional<std::string> environment;  // "sky", "none" or an image file; unset: the scene's own
 };
 
-// --gltf-scene, --camera and --environment.
-std::vector<OptionSpec> sceneChoiceOptions();
-Result<SceneChoice> parseSceneChoice(const CommandLine& options);
-// `specs` and sceneChoiceOptions(), for a command's option table.
+// `specs` and --gltf-scene, --camera and --environment, for a command's option table; and their values.
 std::vector<OptionSpec> withSceneChoice(std::vector<OptionSpec> specs);
+Result<SceneChoice> parseSceneChoice(const CommandLine& options);
 
 // Resolves --scene: a built-in scene's name, a glTF file (.gltf or .glb: its scene, chosen by
 // `choice`) or a JSON scene file; the scene's notes (what was read differently) go to stderr.

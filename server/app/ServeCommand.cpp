@@ -48,7 +48,7 @@ CommandLine serveOptions() {
        "on SIGTERM: answer /readyz 503 and refuse new sessions for N s, then close every session (1001) and exit", "0"},
       {"public-metrics", "", "serve /metrics without the token (for a scraper inside a private network)", ""},
   };
-  for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
+  specs = withSceneChoice(std::move(specs));
   for (OptionSpec& spec :
        settingOptions(session::sessionSettingsSchema(), session::SessionSettings{}, {}, " (sessions' default)"))
     specs.push_back(std::move(spec));

@@ -45,7 +45,7 @@ CommandLine soakBenchOptions() {
       "descriptors and GL objects after the warm-up (a least-squares line). Fails (exit 1) naming what grew\n"
       "beyond its tolerance with a slope 3 standard errors above zero, or when the server's counters disagree\n"
       "with what the clients saw (frames sent < frames received, resumes counted outside what the clients\n"
-      "were told and tried, fewer write timeouts than stops past the deadline, sessions left open after the\n"
+      "were told and tried, fewer write timeouts than stops the server ended, sessions left open after the\n"
       "clients closed), a session ended in an error or\n"
       "received no frame, or the server did not exit cleanly on SIGTERM.",
       {

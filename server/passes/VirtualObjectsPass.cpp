@@ -369,7 +369,6 @@ void VirtualObjectsPass::drawReflectedEnvironment(const FrameContext& frame, con
   reflectedEnvironment_.set("layer", mirror.layer);
   reflectedEnvironment_.set("reflectivity", reflectivity);
   gl.BindVertexArray(emptyVertexArray_.id());
-  gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl.DepthMask(GL_FALSE);  // the mirror's depth stays at the far plane for its virtual objects
   gl.DepthFunc(GL_ALWAYS);
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
@@ -427,6 +426,9 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, frame.reflections.reflectedVertices());
 
   bindGBufferTextures(gl, frame.reflections);
+  // A black background adds nothing to the reflection buffer, cleared to black: no draw per part for it.
+  const bool reflectsEnvironment =
+      frame.scene.environment.kind != scene::EnvironmentKind::Colour || frame.scene.background != glm::vec3(0.0f);
   reflectedEnvironment_.use();
   setGBufferSamplers(reflectedEnvironment_);
   setGBufferPixelMapping(reflectedEnvironment_, frame.reflections);
@@ -472,7 +474,8 @@ void VirtualObjectsPass::execute(const FrameContext& frame) {
       resetMirrorDepth(frame);
     }
     const float reflectivity = frame.scene.materials[frame.scene.objects[mirror->mirrorObject].material].reflectivity;
-    drawReflectedEnvironment(frame, *mirror, reflectivity);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (reflectsEnvironment) drawReflectedEnvironment(frame, *mirror, reflectivity);
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
     setForBoth("layer", mirror->layer);

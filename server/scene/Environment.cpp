@@ -5,13 +5,10 @@
 
 namespace specula::scene {
 
-std::string environmentName(const Scene& scene) {
-  switch (scene.environment.kind) {
-    case EnvironmentKind::Sky: return "sky";
-    case EnvironmentKind::Image: return scene.textures.at(*scene.environment.image).name;
-    case EnvironmentKind::Colour: break;
-  }
-  return "none";
+std::optional<Environment> namedEnvironment(std::string_view name) {
+  if (name == "sky") return Environment{EnvironmentKind::Sky, std::nullopt};
+  if (name == "none") return Environment{EnvironmentKind::Colour, std::nullopt};
+  return std::nullopt;
 }
 
 Status useEnvironmentImage(Scene& scene, const std::filesystem::path& file) {
@@ -32,8 +29,7 @@ Status useEnvironmentImage(Scene& scene, const std::filesystem::path& file) {
 }
 
 Status chooseEnvironment(Scene& scene, const std::string& choice) {
-  if (choice == "sky") scene.environment = {EnvironmentKind::Sky, std::nullopt};
-  else if (choice == "none") scene.environment = {EnvironmentKind::Colour, std::nullopt};
+  if (const auto named = namedEnvironment(choice)) scene.environment = *named;
   else if (Status used = useEnvironmentImage(scene, choice); !used)
     return Error{"'" + choice + "' is neither sky, none nor an image this build reads: " + used.error()};
   return {};

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "base/Result.h"
 #include "common/environment-radiance.glsl"
@@ -25,8 +26,8 @@ struct Environment {
   std::optional<std::uint32_t> image;  // Image: the equirectangular texture, an index into Scene::textures
 };
 
-// "none", "sky" or the image's name, for messages.
-std::string environmentName(const Scene& scene);
+// The environment "sky" or "none" (the scene's background colour) names, or nullopt for any other word.
+std::optional<Environment> namedEnvironment(std::string_view name);
 
 // Makes the equirectangular PNG or JPEG `file` the scene's environment (its u wraps round, its v stops at
 // the poles), its texels counted against the scene's texture budget. Fails naming the file and the fix.

@@ -31,10 +31,11 @@ namespace {
 // "sky", "none" (the background colour) or {"image": "file.jpg"}: an equirectangular PNG or JPEG beside the scene.
 void readEnvironment(const JsonNode& node, const fs::path& baseDir, Scene& scene) {
   if (node.isString()) {
-    if (node.string() != "sky" && node.string() != "none")
+    const auto named = namedEnvironment(node.string());
+    if (!named)
       node.fail("unknown environment " + JsonNode::quoted(node.string()) +
                 "; use \"sky\", \"none\" or {\"image\": \"file.jpg\"}");
-    scene.environment.kind = node.string() == "sky" ? EnvironmentKind::Sky : EnvironmentKind::Colour;
+    scene.environment = *named;
     return;
   }
   node.expectObject({"image"});

@@ -13,17 +13,19 @@ namespace {
 
 constexpr int kMaxGltfIndex = 1 << 20;
 
+}  // namespace
+
 std::vector<OptionSpec> sceneChoiceOptions() {
   return {{"gltf-scene", "N", "with a glTF --scene: which of its scenes (index)", "the file's default scene"},
           {"camera", "N", "with a glTF --scene: which of its cameras (index)",
            "the first on a node, else a view of everything"},
+          {"animation", "all|none|NAME|INDEX",
+           "with a glTF --scene: which of its animations play (by the session's clock, or at --time)", "all"},
           {"environment", "sky|none|FILE",
            "what the background and every mirror show where rays meet nothing: the procedural sky, the scene's "
            "background colour, or an equirectangular PNG or JPEG",
            "the scene's (sky for glTF files and scene files without a background)"}};
 }
-
-}  // namespace
 
 std::vector<OptionSpec> withSceneChoice(std::vector<OptionSpec> specs) {
   for (OptionSpec& spec : sceneChoiceOptions()) specs.push_back(std::move(spec));
@@ -38,6 +40,7 @@ Result<SceneChoice> parseSceneChoice(const CommandLine& options) {
     if (!index) return Error{index.error()};
     (std::string(name) == "camera" ? choice.gltf.camera : choice.gltf.scene) = static_cast<std::size_t>(*index);
   }
+  if (options.has("animation")) choice.gltf.animation = options.text("animation");
   if (options.has("environment")) choice.environment = options.text("environment");
   return choice;
 }

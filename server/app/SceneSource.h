@@ -17,7 +17,9 @@ struct SceneChoice {
   std::optional<std::string> environment;  // "sky", "none" or an image file; unset: the scene's own
 };
 
-// `specs` and --gltf-scene, --camera and --environment, for a command's option table; and their values.
+// --gltf-scene, --camera, --animation and --environment: how a command takes its --scene.
+std::vector<OptionSpec> sceneChoiceOptions();
+// `specs` and the scene choice options, for a command's option table; and their values.
 std::vector<OptionSpec> withSceneChoice(std::vector<OptionSpec> specs);
 Result<SceneChoice> parseSceneChoice(const CommandLine& options);
 

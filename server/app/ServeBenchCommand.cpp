@@ -114,10 +114,10 @@ int runServeBench(std::span<const std::string> arguments) {
     clusterOptions.serveArguments = {
         "--scene",          options.text("scene"),          "--max-sessions", std::to_string(maxSessions + 4),
         "--render-threads", std::to_string(*renderThreads), "--gl",           options.text("gl")};
-    for (const char* name : {"gltf-scene", "camera", "environment"})  // each instance takes the scene as given here
-      if (options.has(name))
+    for (const OptionSpec& spec : sceneChoiceOptions())  // each instance takes the scene as given here
+      if (options.has(spec.name))
         clusterOptions.serveArguments.insert(clusterOptions.serveArguments.end(),
-                                             {"--" + std::string(name), options.text(name)});
+                                             {"--" + std::string(spec.name), options.text(spec.name)});
     std::fprintf(stderr, "bench serve: starting %d instances and HAProxy ...\n", *instances);
     auto started = LoopbackCluster::start(clusterOptions);
     if (!started) return fail(started.error());

@@ -33,4 +33,9 @@ Result<ImportedGltfScene> importGltfScene(const fs::path& file, const GltfSceneC
   return scene;
 }
 
+Result<ImportedGltfScene> importGltfScene(const fs::path& file) {
+  static const GltfSceneChoice kDefault;  // not a temporary per call: GCC 12 misjudges its map's destruction
+  return importGltfScene(file, kDefault);
+}
+
 }  // namespace specula::scene

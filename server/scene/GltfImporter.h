@@ -40,12 +40,14 @@ struct GltfMirrorRule {
   std::map<std::string, bool> materials;  // glTF material name → mirror or not; every name must be in the file
 };
 
-// Which glTF scene and camera: unset, the file's default scene (else its first) and the first camera
-// met in its node tree (else a view framing the scene's bounds); and which materials are mirrors.
+// Which glTF scene, camera and animations: unset, the file's default scene (else its first), the first
+// camera met in its node tree (else a view framing the scene's bounds) and every animation; and which
+// materials are mirrors.
 struct GltfSceneChoice {
   std::optional<std::size_t> scene;
   std::optional<std::size_t> camera;
   GltfMirrorRule mirrors;
+  std::string animation = "all";  // which animations play: all, none, a name or an index
 };
 
 struct ImportedGltfScene {
@@ -56,8 +58,12 @@ struct ImportedGltfScene {
 // down the tree; a node reached twice, by a cycle or a second parent, is refused), each primitive an
 // object with its own material (base colour factor; metallic and smooth, on a closed mesh, a mirror
 // of mixed curvature), the chosen camera and the KHR_lights_punctual lights (a default light when
-// there are none). Meshes are stored in world space. Everything importGltf refuses is refused here
-// too, with the file and the path to the problem.
-Result<ImportedGltfScene> importGltfScene(const std::filesystem::path& file, const GltfSceneChoice& choice = {});
+// there are none), and the chosen animations on the scene's rig. Meshes under a node an animation moves
+// are stored in their node's space and drawn where the rig puts it; the rest in world space. Everything
+// importGltf refuses is refused here too, with the file and the path to the problem (JSONPath for
+// animations).
+Result<ImportedGltfScene> importGltfScene(const std::filesystem::path& file, const GltfSceneChoice& choice);
+// The same with the default choice.
+Result<ImportedGltfScene> importGltfScene(const std::filesystem::path& file);
 
 }  // namespace specula::scene

@@ -9,6 +9,7 @@
 #include "scene/Light.h"
 #include "scene/Material.h"
 #include "scene/Mesh.h"
+#include "scene/NodeRig.h"
 #include "scene/SceneObject.h"
 #include "scene/Texture.h"
 
@@ -32,6 +33,7 @@ struct Scene {
   Environment environment;     // what rays that meet nothing see
   math::Camera camera;         // default camera (rest pose of the camera animation, if any)
   std::vector<Animation> animations;
+  NodeRig rig;  // glTF nodes: their animations, and the objects and camera they carry
   // What loading read differently from the files or left out, one line each, for the user: printed when
   // the scene loads and sent in every session's welcome.
   std::vector<std::string> notes;
@@ -39,6 +41,7 @@ struct Scene {
   std::size_t vertexCount() const;
   std::size_t triangleCount() const;
   std::size_t mirrorCount() const;
+  bool moves() const { return !animations.empty() || rig.moves(); }  // anything changes with time
 };
 
 }  // namespace specula::scene

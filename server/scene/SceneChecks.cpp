@@ -187,7 +187,7 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
         if (auto problem = math::cameraProblem(key.camera)) return where + *problem;
     }
   }
-  return std::nullopt;
+  return rigProblem(scene.rig, scene.objects.size());
 }
 
 }  // namespace specula::scene

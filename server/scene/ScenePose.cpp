@@ -87,6 +87,13 @@ ScenePose ScenePose::at(const Scene& scene, double seconds) {
   }
   pose.objectToWorld.reserve(transforms.size());
   for (const math::Transform& tr : transforms) pose.objectToWorld.push_back(tr.matrix());
+  if (scene.rig.nodes.empty()) return pose;
+  const std::vector<glm::dmat4> nodeToWorld = scene.rig.worldAt(seconds);
+  for (const RiggedObject& rigged : scene.rig.objects)
+    pose.objectToWorld[rigged.object] =
+        glm::mat4(glm::dmat4(pose.objectToWorld[rigged.object]) * nodeToWorld[rigged.node]);
+  if (const auto& camera = scene.rig.camera)
+    pose.camera = NodeRig::cameraOf(nodeToWorld[camera->node], camera->fovYDegrees);
   return pose;
 }
 

@@ -173,7 +173,7 @@ void Session::onHello(const v1::Hello& hello, Clock::time_point now) {
     if (restored) {
       state_ = std::move(*restored);
       if (state_.playOnResume) state_.clock.play(now);
-    } else if (!hub_.scene().animations.empty()) {
+    } else if (hub_.scene().moves()) {
       state_.clock.play(now);  // a moving scene moves from the start
     }
     state_.width = static_cast<int>(hello.width());
@@ -211,7 +211,7 @@ v1::Welcome Session::welcome(bool resumed, Clock::time_point now) const {
   *info.mutable_target() = toProto(scene.camera.target);
   *info.mutable_up() = toProto(scene.camera.up);
   info.set_fov_degrees(scene.camera.fovYDegrees);
-  info.set_animated(!scene.animations.empty());
+  info.set_animated(scene.moves());
   for (const std::string& note : scene.notes) info.add_notes(note);
   v1::Limits& limits = *out.mutable_limits();
   limits.set_max_message_bytes(static_cast<std::uint32_t>(options.maxMessageBytes));

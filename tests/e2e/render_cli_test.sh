@@ -28,6 +28,17 @@ fails_with "a bad vector names the option" "--eye expects three comma-separated 
 fails_with "a missing environment image is named with the choices" \
   "--environment: 'no-such-sky.jpg' is neither sky, none nor an image this build reads: no-such-sky.jpg" \
   render --environment no-such-sky.jpg
+animated="$(dirname "$0")/../data/gltf/animated.glb"
+for t in 0.3 1.3; do
+  for choice in all none; do
+    "$specula" render --scene "$animated" --animation $choice --time $t --size 96x72 --samples 1 --out "$work/animated-$choice-$t.png" >/dev/null 2>&1
+  done
+done
+check "a glTF file's animations play by --time" bash -c "! cmp -s '$work/animated-all-0.3.png' '$work/animated-all-1.3.png'"
+check "--animation none holds the rest pose at every time" cmp -s "$work/animated-none-0.3.png" "$work/animated-none-1.3.png"
+fails_with "an unknown animation lists the file's" \
+  'there is no animation "walk" (the file has 0 "show", 1 "dolly"); name one, or all or none, with --animation' \
+  render --scene "$animated" --animation walk
 fails_with "eye on target is refused" "bad camera: camera eye and target coincide" render --eye 0,0,0 --target 0,0,0
 fails_with "an unknown output format is refused" "--out must end in .png, .jpg or .jpeg" render --out "$work/f.bmp"
 fails_with "an unknown option is refused" "unknown option --colour" render --colour red

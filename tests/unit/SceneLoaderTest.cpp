@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -358,6 +359,35 @@ TEST(SceneLoader, IncludedGltfScenesAreGroupsWithNamedObjects) {
   // The group moves its objects: left/crate's box is centred 3 m to the left of the included file's.
   const ScenePose pose = ScenePose::at(*scene, 0.0);
   EXPECT_FLOAT_EQ(pose.objectToWorld[1][3].x, -3.0f);
+}
+
+// An include plays the animations it names, placed where the include puts the group; the file's own
+// camera stays, though the glTF's camera node has an animation of its own.
+TEST(SceneLoader, AnIncludePlaysItsChosenAnimationsWhereItIsPlaced) {
+  Result<Scene> scene = loadSceneFile(fs::path(SPECULA_TEST_DATA_DIR) / "gltf" / "animated-includes.json");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  ASSERT_FALSE(sceneProblem(*scene).has_value());
+  EXPECT_TRUE(scene->moves());
+  ASSERT_EQ(scene->rig.clips.size(), 1u);
+  EXPECT_EQ(scene->rig.clips[0].name, "moving/show");
+  const auto originAt = [&](const std::string& name, double seconds) {
+    const ScenePose pose = ScenePose::at(*scene, seconds);
+    for (std::size_t i = 0; i < scene->objects.size(); ++i)
+      if (scene->objects[i].name == name) return glm::vec3(pose.objectToWorld[i] * glm::vec4(0, 0, 0, 1));
+    ADD_FAILURE() << "no object " << name;
+    return glm::vec3(0.0f);
+  };
+  // At 0.25 s the carousel has carried the red box 45° round, to (c, 0.4, -c); the include turns that a
+  // quarter about y, to (-c, 0.4, -c), and moves it 6 along x.
+  const float c = 2.5f * std::cos(glm::radians(45.0f));
+  const glm::vec3 moving = originAt("moving/red box", 0.25);
+  EXPECT_NEAR(moving.x, 6.0f - c, 1e-5f);
+  EXPECT_NEAR(moving.y, 0.4f, 1e-5f);
+  EXPECT_NEAR(moving.z, -c, 1e-5f);
+  for (double t : {0.0, 0.25, 1.0})  // baked into the glTF's world space at rest, placed by the include
+    EXPECT_EQ(originAt("still/red box", t), glm::vec3(-6.0f, 0.0f, 0.0f));
+  const ScenePose later = ScenePose::at(*scene, 2.0);
+  EXPECT_EQ(later.camera.eye, scene->camera.eye) << "an include's camera animation does not move the file's camera";
 }
 
 // An include's mirror rule: a material named off is no mirror, lower thresholds make more of them.

@@ -2,6 +2,7 @@
 // Typed reads of glTF accessors, each checked first to lie wholly inside its buffer view and buffer.
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -32,6 +33,9 @@ struct Accessor {
     switch (componentType) {
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return static_cast<float>(at[0]) / 255.0f;
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return static_cast<float>(load<std::uint16_t>(at)) / 65535.0f;
+      // Signed normalized, as the glTF spec maps them: the most negative value is -1 too.
+      case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(static_cast<float>(load<std::int8_t>(at)) / 127.0f, -1.0f);
+      case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(static_cast<float>(load<std::int16_t>(at)) / 32767.0f, -1.0f);
       default: return load<float>(at);
     }
   }

@@ -5,16 +5,19 @@
 #include <string>
 
 #include "math/Bounds.h"
+#include "scene/ScenePose.h"
 
 namespace specula::scene::gltf {
 
 namespace {
 
-// A view of the scene's bounds from the front, above and to the right, the whole box in a 45° frame.
+// A view of the scene's bounds at time 0 from the front, above and to the right, the whole box in a 45° frame.
 math::Camera framingCamera(const Scene& scene) {
   math::Bounds bounds;
-  for (const SceneObject& object : scene.objects)
-    for (const Vertex& v : scene.meshes[object.mesh].vertices) bounds.add(v.position);
+  const ScenePose pose = ScenePose::at(scene, 0.0);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    for (const Vertex& v : scene.meshes[scene.objects[i].mesh].vertices)
+      bounds.add(glm::vec3(pose.objectToWorld[i] * glm::vec4(v.position, 1.0f)));
   const glm::vec3 centre = bounds.center();
   const float radius = std::max(bounds.radius(), 1e-3f);
   math::Camera camera;
@@ -47,17 +50,13 @@ Status placeCamera(const tinygltf::Model& model, const std::vector<NodeAttachmen
     imported.scene.notes.push_back("camera " + std::to_string(placed->index) +
                                    " is not perspective: the view frames the scene instead");
   } else {
-    const glm::mat4 world(placed->world);
     const double yfov = model.cameras[static_cast<std::size_t>(placed->index)].perspective.yfov;
-    math::Camera camera;
-    camera.eye = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    camera.target = camera.eye +
-                    glm::normalize(glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));  // glTF cameras look down -z
-    camera.up = glm::normalize(glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)));
-    camera.fovYDegrees = static_cast<float>(glm::degrees(yfov));
+    const auto fovYDegrees = static_cast<float>(glm::degrees(yfov));
+    const math::Camera camera = NodeRig::cameraOf(placed->world, fovYDegrees);
     if (auto problem = math::cameraProblem(camera))
       return Error{"camera " + std::to_string(placed->index) + ": " + *problem};
     scene.camera = camera;
+    if (placed->rigNode) scene.rig.camera = RiggedCamera{*placed->rigNode, fovYDegrees};
   }
   return {};
 }

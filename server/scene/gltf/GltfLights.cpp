@@ -10,7 +10,8 @@ namespace specula::scene::gltf {
 // shading without falloff.
 Status addLights(const tinygltf::Model& model, const std::vector<NodeAttachment>& lights, ImportedGltfScene& imported) {
   double brightest = 0.0;
-  for (const auto& [index, world] : lights) {
+  for (const NodeAttachment& attached : lights) {
+    const int index = attached.index;
     if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size())
       return Error{"a node refers to light " + std::to_string(index) + ", but the file has " +
                    std::to_string(model.lights.size())};
@@ -20,20 +21,21 @@ Status addLights(const tinygltf::Model& model, const std::vector<NodeAttachment>
     brightest = std::max(brightest, intensity);
   }
   Scene& scene = imported.scene;
-  for (const auto& [index, world] : lights) {
-    const tinygltf::Light& source = model.lights[static_cast<std::size_t>(index)];
+  for (const NodeAttachment& attached : lights) {
+    const tinygltf::Light& source = model.lights[static_cast<std::size_t>(attached.index)];
     if (scene.lights.size() == kMaxLights) {
       imported.scene.notes.push_back("more than " + std::to_string(kMaxLights) + " lights: the rest are left out");
       break;
     }
     Light light;
-    const glm::mat4 toWorld(world);
+    const glm::mat4 toWorld(attached.world);
     if (source.type == "directional") {
       light.kind = Light::Kind::Directional;
       light.vector = glm::normalize(glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)));  // it shines down -z
     } else {
       if (source.type == "spot")
-        imported.scene.notes.push_back("light " + std::to_string(index) + " is a spot light: drawn as a point light");
+        imported.scene.notes.push_back("light " + std::to_string(attached.index) +
+                                       " is a spot light: drawn as a point light");
       light.kind = Light::Kind::Point;
       light.vector = glm::vec3(toWorld * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     }

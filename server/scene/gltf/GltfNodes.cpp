@@ -9,43 +9,41 @@
 
 namespace specula::scene::gltf {
 
-namespace {
+namespace {}  // namespace
 
-// A node's own transform: its matrix, or translation · rotation · scale.
-Result<glm::dmat4> nodeMatrix(const tinygltf::Node& node, std::size_t index) {
+Result<RigNode> restTransform(const tinygltf::Node& node, std::size_t index) {
   const std::string where = "node " + std::to_string(index) + ": ";
   const auto finite = [](const std::vector<double>& values) {
     return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
   };
   if (!finite(node.matrix) || !finite(node.translation) || !finite(node.rotation) || !finite(node.scale))
     return Error{where + "its transform is not finite"};
+  RigNode rest;
   if (!node.matrix.empty()) {
     if (node.matrix.size() != 16) return Error{where + "matrix must have 16 numbers"};
     glm::dmat4 m;
     for (int column = 0; column < 4; ++column)
       for (int row = 0; row < 4; ++row)
         m[column][row] = node.matrix[static_cast<std::size_t>(4 * column + row)];  // column-major
-    return m;
+    rest.matrix = m;
+    return rest;
   }
-  glm::dmat4 m(1.0);
   if (!node.translation.empty()) {
     if (node.translation.size() != 3) return Error{where + "translation must have 3 numbers"};
-    m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    rest.translation = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
   }
   if (!node.rotation.empty()) {
     if (node.rotation.size() != 4) return Error{where + "rotation must be a quaternion of 4 numbers (x, y, z, w)"};
     const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
     if (glm::length(q) < 1e-6) return Error{where + "rotation is a zero quaternion"};
-    m = m * glm::mat4_cast(glm::normalize(q));
+    rest.rotation = glm::normalize(q);
   }
   if (!node.scale.empty()) {
     if (node.scale.size() != 3) return Error{where + "scale must have 3 numbers"};
-    m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    rest.scale = glm::dvec3(node.scale[0], node.scale[1], node.scale[2]);
   }
-  return m;
+  return rest;
 }
-
-}  // namespace
 
 std::optional<int> nodeLight(const tinygltf::Node& node) {
   const auto extension = node.extensions.find("KHR_lights_punctual");
@@ -56,14 +54,15 @@ std::optional<int> nodeLight(const tinygltf::Node& node) {
 }
 
 Status walkNodeTree(const tinygltf::Model& model, std::size_t sceneIndex,
-                    const std::function<Status(std::size_t node, const glm::dmat4& world)>& visit) {
+                    const std::function<Status(const VisitedNode& node)>& visit) {
   struct Pending {
     int node;
-    glm::dmat4 parent;
+    std::optional<std::size_t> parent;
+    glm::dmat4 parentWorld;
   };
   std::vector<Pending> pending;
   const std::vector<int>& roots = model.scenes[sceneIndex].nodes;
-  for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.push_back({*it, glm::dmat4(1.0)});
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.push_back({*it, std::nullopt, glm::dmat4(1.0)});
   std::vector<bool> reached(model.nodes.size(), false);
   while (!pending.empty()) {
     const Pending next = pending.back();
@@ -77,12 +76,12 @@ Status walkNodeTree(const tinygltf::Model& model, std::size_t sceneIndex,
                    " is reached twice: the node tree has a cycle or a node with two parents"};
     reached[index] = true;
     const tinygltf::Node& node = model.nodes[index];
-    Result<glm::dmat4> local = nodeMatrix(node, index);
-    if (!local) return Error{local.error()};
-    const glm::dmat4 world = next.parent * local.value();
+    Result<RigNode> rest = restTransform(node, index);
+    if (!rest) return Error{rest.error()};
+    const VisitedNode visiting{index, next.parent, rest.value(), next.parentWorld * rest->local()};
     for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
-      pending.push_back({*child, world});
-    if (Status visited = visit(index, world); !visited) return visited;
+      pending.push_back({*child, index, visiting.world});
+    if (Status visited = visit(visiting); !visited) return visited;
   }
   return {};
 }

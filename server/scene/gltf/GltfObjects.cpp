@@ -20,7 +20,10 @@ void moveToWorld(Mesh& part, const glm::dmat4& world) {
     v.position = glm::vec3(toWorld * glm::vec4(v.position, 1.0f));
     v.normal = glm::normalize(normals * v.normal);
   }
-  // A mirroring transform turns the winding; glTF keeps fronts where normals point.
+}
+
+// A mirroring transform turns the winding; glTF keeps fronts where normals point.
+void keepFrontsUnder(Mesh& part, const glm::dmat4& world) {
   if (glm::determinant(glm::dmat3(world)) < 0.0)
     for (std::size_t t = 0; t < part.indices.size(); t += 3) std::swap(part.indices[t + 1], part.indices[t + 2]);
 }
@@ -30,7 +33,7 @@ void moveToWorld(Mesh& part, const glm::dmat4& world) {
 ObjectPlacer::ObjectPlacer(const tinygltf::Model& model, MaterialTable& materials, ImportedGltfScene& imported)
     : model_(model), materials_(materials), imported_(imported) {}
 
-Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world) {
+Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world, std::optional<std::uint32_t> rigNode) {
   const tinygltf::Node& node = model_.nodes[index];
   if (node.mesh < 0) return {};
   if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
@@ -50,7 +53,10 @@ Status ObjectPlacer::placeNodeMesh(std::size_t index, const glm::dmat4& world) {
     if ((vertices_ += part->vertices.size()) > kMaxVerticesPerScene)
       return Error{"the scene has more than " + std::to_string(kMaxVerticesPerScene) +
                    " vertices, the limit per scene"};
-    moveToWorld(part.value(), world);
+    if (!rigNode) moveToWorld(part.value(), world);
+    keepFrontsUnder(part.value(), world);
+    if (rigNode)
+      imported_.scene.rig.objects.push_back({static_cast<std::uint32_t>(imported_.scene.objects.size()), *rigNode});
     part->name = uniqueName(source.primitives.size() > 1 ? base + " #" + std::to_string(p) : base, base);
     if (Status added = addObject(std::move(part.value()), source.primitives[p].material); !added) return added;
   }

@@ -3,6 +3,8 @@
 #include <tiny_gltf.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <glm/glm.hpp>
 #include <set>
 #include <string>
@@ -21,8 +23,9 @@ class ObjectPlacer {
  public:
   ObjectPlacer(const tinygltf::Model& model, MaterialTable& materials, ImportedGltfScene& imported);
 
-  // Node `index`'s mesh, if it has one, placed at `world`; a singular transform leaves it out, with a note.
-  Status placeNodeMesh(std::size_t index, const glm::dmat4& world);
+  // Node `index`'s mesh, if it has one, placed at `world` (its rest pose); a singular transform leaves it
+  // out, with a note. Under a `rigNode` the mesh stays in the node's space and the rig places its objects.
+  Status placeNodeMesh(std::size_t index, const glm::dmat4& world, std::optional<std::uint32_t> rigNode);
 
  private:
   std::string uniqueName(const std::string& wanted, const std::string& base);

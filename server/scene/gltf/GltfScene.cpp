@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scene/SceneChecks.h"
+#include "scene/gltf/GltfAnimations.h"
 #include "scene/gltf/GltfCamera.h"
 #include "scene/gltf/GltfLights.h"
 #include "scene/gltf/GltfMaterials.h"
@@ -34,9 +35,6 @@ void noteWhatIsNotRead(const tinygltf::Model& model, std::vector<std::string>& n
   const auto count = [](std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
   };
-  if (!model.animations.empty())
-    notes.push_back(count(model.animations.size(), "animation", "animations") +
-                    " not played (glTF animations are not read yet): every node stays in its rest pose");
   if (!model.skins.empty())
     notes.push_back(count(model.skins.size(), "skin", "skins") +
                     " not applied (skinning is not read yet): skinned meshes are drawn in their bind pose");
@@ -67,17 +65,52 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
   if (Status named = checkMirrorRuleNames(model, choice.mirrors); !named) return Error{named.error()};
   noteWhatIsNotRead(model, imported.scene.notes);
 
+  std::vector<VisitedNode> visited;  // parents before their children
+  const Status walked = walkNodeTree(model, chosen.value(), [&](const VisitedNode& node) {
+    visited.push_back(node);
+    return Status{};
+  });
+  if (!walked) return Error{walked.error()};
+
+  // Every node of the scene joins the rig; only the objects under a node some animation moves use it.
+  NodeRig& rig = imported.scene.rig;
+  std::vector<std::optional<std::uint32_t>> rigNode(model.nodes.size());
+  for (const VisitedNode& node : visited) {
+    rigNode[node.index] = static_cast<std::uint32_t>(rig.nodes.size());
+    rig.nodes.push_back(node.rest);
+    if (node.parent) rig.nodes.back().parent = rigNode[*node.parent];
+  }
+  Result<std::vector<NodeClip>> clips = readClips(model, choice.animation, rigNode, imported.scene.notes);
+  if (!clips) return Error{clips.error()};
+  rig.clips = std::move(clips).value();
+  std::vector<bool> moved(rig.nodes.size(), false);
+  for (const NodeClip& clip : rig.clips)
+    for (const NodeChannel& channel : clip.channels) moved[channel.node] = true;
+  for (std::size_t i = 0; i < rig.nodes.size(); ++i)
+    if (rig.nodes[i].parent && moved[*rig.nodes[i].parent]) moved[i] = true;
+  NodeRig still;
+  still.nodes = rig.nodes;
+  const std::vector<glm::dmat4> restWorld = still.worldAt(0.0);  // scales clamped as animations draw them
+
   MaterialTable materials(model, images, choice.mirrors, imported.scene, imported.scene.notes);
   ObjectPlacer objects(model, materials, imported);
   std::vector<NodeAttachment> cameras, lights;  // in the order first met
-  const Status walked = walkNodeTree(model, chosen.value(), [&](std::size_t index, const glm::dmat4& world) {
-    const tinygltf::Node& node = model.nodes[index];
-    if (node.camera >= 0) cameras.push_back({node.camera, world});
-    if (const auto light = nodeLight(node)) lights.push_back({*light, world});
-    return objects.placeNodeMesh(index, world);
-  });
-  if (!walked) return Error{walked.error()};
+  for (std::uint32_t i = 0; i < visited.size(); ++i) {
+    const tinygltf::Node& node = model.nodes[visited[i].index];
+    const std::optional<std::uint32_t> mover = moved[i] ? std::optional(i) : std::nullopt;
+    if (node.camera >= 0) cameras.push_back({node.camera, visited[i].world, mover});
+    if (const auto light = nodeLight(node)) {
+      lights.push_back({*light, visited[i].world, mover});
+      if (mover)
+        imported.scene.notes.push_back("light " + std::to_string(*light) +
+                                       " is on an animated node: it stays where the rest pose puts it");
+    }
+    if (Status placed = objects.placeNodeMesh(visited[i].index, mover ? restWorld[i] : visited[i].world, mover);
+        !placed)
+      return Error{placed.error()};
+  }
   if (imported.scene.objects.empty()) return Error{"scene " + std::to_string(chosen.value()) + " draws no mesh"};
+  if (!rig.moves()) rig = NodeRig{};  // a still scene keeps its meshes in world space and needs no rig
 
   if (Status placed = placeCamera(model, cameras, choice.camera, chosen.value(), imported); !placed)
     return Error{placed.error()};

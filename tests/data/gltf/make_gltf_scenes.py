@@ -9,6 +9,10 @@
       box, a camera looking at it.
   textured-box.gltf (+ crate.png): a box whose six faces each show the whole of an external PNG
       (clamped), on a floor tinted by the same image, mirrored-repeat; no camera, no lights.
+  animated.glb: a chrome sphere bobbing over a floor while a red box circles it (a carousel node turned
+      by LINEAR rotation keys), a green box halves in size at 1 s (STEP scale) and a blue box crosses in
+      front (CUBICSPLINE translation), all in the animation "show" (2 s); the camera dollies in over 4 s
+      in the animation "dolly".
   engine.glb: a two-cylinder engine of 29 meshes on 82 nodes up to five deep (TRS and matrices,
       meshes instanced on several nodes), painted, cast, aluminium, rubber, copper and chrome parts
       (the chrome valve covers, exhaust headers, flywheel and oil cap become mirrors), two
@@ -76,6 +80,18 @@ class Builder:
         self.bin += png
         self.doc.setdefault("images", []).append({"bufferView": len(self.doc["bufferViews"]) - 1, "mimeType": "image/png"})
         return len(self.doc["images"]) - 1
+
+    def animation(self, name, channels):
+        """An animation of `channels`, each (node, path, interpolation, times, values as flat floats)."""
+        samplers, targets = [], []
+        for node, path, interpolation, times, values in channels:
+            kind = "VEC4" if path == "rotation" else "VEC3"
+            width = 4 if kind == "VEC4" else 3
+            times_at = self.accessor(pack(times), "SCALAR", len(times), 5126, ([min(times)], [max(times)]))
+            values_at = self.accessor(pack(values), kind, len(values) // width, 5126)
+            samplers.append({"input": times_at, "output": values_at, "interpolation": interpolation})
+            targets.append({"sampler": len(samplers) - 1, "target": {"node": node, "path": path}})
+        self.doc.setdefault("animations", []).append({"name": name, "channels": targets, "samplers": samplers})
 
     def node(self, **fields):
         self.doc["nodes"].append(fields)
@@ -301,6 +317,42 @@ def textured_box():
         f.write(crate_png())
 
 
+def animated():
+    g = Builder()
+    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
+    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
+    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
+    green = g.material("green", (0.1, 0.7, 0.2), 0.0, 0.6)
+    blue = g.material("blue", (0.1, 0.2, 0.8), 0.0, 0.6)
+    ball = g.mesh("ball", *sphere(1.0, 24, 48), chrome)
+    floor = g.mesh("floor", *quad(5.0), grey)
+    cube = lambda name, material: g.mesh(name, *box((0.4, 0.4, 0.4)), material)
+    mirror = g.node(name="mirror", mesh=ball, translation=[0, 1.2, 0])
+    red_box = g.node(name="red box", mesh=cube("red box", red), translation=[2.5, 0.4, 0])
+    carousel = g.node(name="carousel", children=[red_box])
+    green_box = g.node(name="green box", mesh=cube("green box", green), translation=[-2.5, 0.4, -2.6])
+    blue_box = g.node(name="blue box", mesh=cube("blue box", blue), translation=[-1.5, 0.4, 2.6])
+    ground = g.node(name="floor", mesh=floor)
+    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]
+    tilt = math.radians(-15.0) / 2
+    camera = g.node(name="camera", camera=0, translation=[0, 3, 9], rotation=[math.sin(tilt), 0, 0, math.cos(tilt)])
+    g.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3.0}]}}
+    sun = g.node(name="sun", rotation=[-0.3826834, 0.2, 0, 0.9], extensions={"KHR_lights_punctual": {"light": 0}})
+    turn = lambda degrees: [0, math.sin(math.radians(degrees) / 2), 0, math.cos(math.radians(degrees) / 2)]
+    g.animation("show", [
+        (mirror, "translation", "LINEAR", [0, 1, 2], [0, 1.2, 0, 0, 1.7, 0, 0, 1.2, 0]),
+        (carousel, "rotation", "LINEAR", [0, 2 / 3, 4 / 3, 2], turn(0) + turn(120) + turn(240) + turn(360)),
+        (green_box, "scale", "STEP", [0, 1], [1, 1, 1, 0.5, 0.5, 0.5]),
+        # (in-tangent, value, out-tangent) a key: x tangents of the straight line, y tangents of 1 make a hump.
+        (blue_box, "translation", "CUBICSPLINE", [0, 2],
+         [0, 1, 0, -1.5, 0.4, 2.6, 1.5, 1, 0] + [1.5, 1, 0, 1.5, 0.4, 2.6, 0, 1, 0]),
+    ])
+    g.animation("dolly", [(camera, "translation", "LINEAR", [0, 4], [0, 3, 9, 0, 3, 7])])
+    g.doc["scenes"] = [{"nodes": [ground, mirror, carousel, green_box, blue_box, camera, sun]}]
+    g.write_glb("animated.glb")
+
+
 def engine():
     g = Builder()
     paint = g.material("engine blue", (0.12, 0.22, 0.42), 0.2, 0.5)
@@ -402,4 +454,5 @@ if __name__ == "__main__":
     node_tree()
     chrome_sphere()
     textured_box()
+    animated()
     engine()

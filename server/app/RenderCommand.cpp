@@ -172,11 +172,14 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
         "measured here, "
         "%.2f, %.2f)\n",
         scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
-        methodWords(mirror.method), mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects,
-        mirror.culledVertices, mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow",
-        mirror.belowBudgetObjects, mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels),
-        mirror.uncoveredRayCast, mirror.castTiles.listed, mirror.castTiles.possible, mirror.predictedCost.search,
-        mirror.predictedCost.rayCast, frame.planner.rates.search, frame.planner.rates.rayCast);
+        mirror.method == passes::PartMethod::RayCast && scene.objects[mirror.mirrorObject].mirror->twoSided()
+            ? "ray-cast (an open mesh: only a closed one is searched)"
+            : methodWords(mirror.method),
+        mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects, mirror.culledVertices,
+        mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow", mirror.belowBudgetObjects,
+        mirror.belowBudgetVertices, static_cast<double>(settings.errorBudgetPixels), mirror.uncoveredRayCast,
+        mirror.castTiles.listed, mirror.castTiles.possible, mirror.predictedCost.search, mirror.predictedCost.rayCast,
+        frame.planner.rates.search, frame.planner.rates.rayCast);
     text += line;
   }
   const passes::TessellationStatistics& tessellation = frame.tessellation;

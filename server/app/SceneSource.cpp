@@ -20,7 +20,7 @@ std::vector<OptionSpec> sceneChoiceOptions() {
           {"camera", "N", "with a glTF --scene: which of its cameras (index)",
            "the first on a node, else a view of everything"},
           {"animation", "all|none|NAME|INDEX",
-           "with a glTF --scene: which of its animations play (by the session's clock, or at --time)", "all"},
+           "with a glTF --scene: which of its animations play: all, none, or one by name or index", "all"},
           {"environment", "sky|none|FILE",
            "what the background and every mirror show where rays meet nothing: the procedural sky, the scene's "
            "background colour, or an equirectangular PNG or JPEG",

@@ -198,6 +198,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
     }
     planned.fittedCost = predictPartCost(pixels, planned.reflected);
     planned.cost = {planned.fittedCost.search * rates.search, planned.fittedCost.rayCast * rates.rayCast};
+    // A search on an open surface would pin reflection points that lie past its rim to the rim: a two-sided
+    // mirror is cast whatever the settings ask.
+    if (method == PartMethod::VirtualObjects && search && mirror.twoSided)
+      method = planned.method = PartMethod::RayCast;
     if (method == PartMethod::VirtualObjects && search && !everything &&
         (settings.rayCast == RayCastRule::Always ||
          (settings.rayCast == RayCastRule::WhenCheaper &&

@@ -32,6 +32,9 @@ struct MirrorSlots {
   // Declared a linear extrusion (scene::MirrorInfo::extrusion): the search can solve it exactly and
   // then needs none of a strategy's structures (ReflectionSettings::solveExtrusions).
   bool extrusion = false;
+  // An open mirror with no closed twin (scene::MirrorInfo::twoSided): its parts are always ray-cast,
+  // seen from either side, so they are saddles reaching every way.
+  bool twoSided = false;
 };
 
 struct ReflectionSlots {

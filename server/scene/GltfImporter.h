@@ -27,8 +27,9 @@ using GltfMeshSelector = std::variant<std::monostate, std::size_t, std::string>;
 // non-finite values, non-triangle primitives, more than kMaxVerticesPerScene vertices.
 Result<Mesh> importGltf(const std::filesystem::path& file, const GltfMeshSelector& which, std::string meshName);
 
-// A material becomes a mirror where it is this metallic and this smooth (pbrMetallicRoughness), on
-// a closed mesh; its reflectivity is metallic × its base colour's brightest channel.
+// A material becomes a mirror where it is this metallic and this smooth (pbrMetallicRoughness); its
+// reflectivity is metallic × its base colour's brightest channel. On an open mesh it is a two-sided
+// mirror that is ray-cast (MirrorInfo::twoSided).
 inline constexpr double kGltfMirrorMetallic = 0.9, kGltfMirrorRoughness = 0.1;
 
 // Which materials are mirrors: the thresholds above, or a scene file's own (its include's
@@ -56,8 +57,8 @@ struct ImportedGltfScene {
 
 // The chosen glTF scene: every node with a mesh, at its world transform (TRS or matrix, composed
 // down the tree; a node reached twice, by a cycle or a second parent, is refused), each primitive an
-// object with its own material (base colour factor; metallic and smooth, on a closed mesh, a mirror
-// of mixed curvature), the chosen camera and the KHR_lights_punctual lights (a default light when
+// object with its own material (base colour factor; metallic and smooth, a mirror of mixed curvature,
+// two-sided on an open mesh), the chosen camera and the KHR_lights_punctual lights (a default light when
 // there are none), and the chosen animations on the scene's rig. Meshes under a node an animation moves
 // are stored in their node's space and drawn where the rig puts it; the rest in world space. Everything
 // importGltf refuses is refused here too, with the file and the path to the problem (JSONPath for

@@ -23,11 +23,12 @@ struct AnalyticShape {
   bool exactSurface = true;
 };
 
-// What makes an object a mirror. Open mirrors (a bowl, a half-pipe) are searched on a closed twin mesh.
+// What makes an object a mirror. Open mirrors (a bowl, a half-pipe) are searched on a closed twin mesh;
+// one without a twin (an open chrome mesh from a glTF file) reflects on both sides and is ray-cast.
 struct MirrorInfo {
   MirrorCurvature curvature = MirrorCurvature::Convex;
   bool closed = true;
-  std::optional<std::uint32_t> closedTwinMesh;  // index into Scene::meshes; set exactly when !closed
+  std::optional<std::uint32_t> closedTwinMesh;  // index into Scene::meshes; only for open mirrors
   std::optional<AnalyticShape> analytic;
   // A convex mirror that is a linear extrusion of an ellipse (a cylinder), in object space: the mesh
   // is its surface; the search may solve its reflection points exactly by Ofek & Rappoport's 2-D
@@ -37,6 +38,8 @@ struct MirrorInfo {
   // Whether renderer and ray tracer use the analytic quadric as the surface: a closed mirror whose
   // shape says so (an open one's quadric would cover where its mesh has no surface).
   bool exactQuadric() const { return analytic && analytic->exactSurface && closed; }
+  // Open with no closed twin to search: both sides reflect, every pixel's reflected ray is cast.
+  bool twoSided() const { return !closed && !closedTwinMesh; }
 };
 
 }  // namespace specula::scene

@@ -122,8 +122,8 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
     if (o.material >= scene.materials.size()) return where + "material index out of range";
     if (auto problem = transformProblem(o.transform)) return where + *problem;
     if (o.mirror) {
-      if (o.mirror->closed == o.mirror->closedTwinMesh.has_value())
-        return where + "an open mirror needs a closed twin mesh, and a closed one must not have one";
+      if (o.mirror->closed && o.mirror->closedTwinMesh)
+        return where + "a closed mirror must not have a closed twin mesh";
       if (o.mirror->closedTwinMesh && *o.mirror->closedTwinMesh >= scene.meshes.size())
         return where + "closed twin mesh index out of range";
       if (o.mirror->analytic && (!finite(o.mirror->analytic->center) ||

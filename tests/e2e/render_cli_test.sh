@@ -39,6 +39,9 @@ check "--animation none holds the rest pose at every time" cmp -s "$work/animate
 fails_with "an unknown animation lists the file's" \
   'there is no animation "walk" (the file has 0 "show", 1 "dolly"); name one, or all or none, with --animation' \
   render --scene "$animated" --animation walk
+output=$("$specula" render --scene "$(dirname "$0")/../data/gltf/open-chrome.glb" --ray-cast never --size 96x72 --samples 1 --out "$work/open.png" 2>&1)
+check "an open chrome mesh is a two-sided mirror, ray-cast with --ray-cast never too" contains "$output" "'bowl' is an open mesh: a two-sided mirror whose reflections are ray-cast" \
+  "plan: mirror 'bowl' part 0 (saddle, .*): ray-cast (an open mesh: only a closed one is searched) "
 fails_with "eye on target is refused" "bad camera: camera eye and target coincide" render --eye 0,0,0 --target 0,0,0
 fails_with "an unknown output format is refused" "--out must end in .png, .jpg or .jpeg" render --out "$work/f.bmp"
 fails_with "an unknown option is refused" "unknown option --colour" render --colour red

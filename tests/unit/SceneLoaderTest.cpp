@@ -363,6 +363,19 @@ TEST(SceneLoader, IncludedGltfScenesAreGroupsWithNamedObjects) {
 
 // An include plays the animations it names, placed where the include puts the group; the file's own
 // camera stays, though the glTF's camera node has an animation of its own.
+// An open mirror without a closed twin to search is two-sided and ray-cast, as open glTF chrome meshes are.
+TEST(SceneLoader, AnOpenMirrorWithoutATwinIsTwoSided) {
+  Result<Scene> scene = parseScene(R"({"specula_scene": 1, "camera": {"eye": [0, 2, 6], "target": [0, 0, 0]},
+    "meshes": [{"name": "pipe", "primitive": {"type": "cylinder", "radius": 1, "height": 2, "capped": false}}],
+    "materials": [{"name": "chrome", "color": "#000000", "reflectivity": 1}],
+    "objects": [{"name": "pipe", "mesh": "pipe", "material": "chrome", "mirror": {"closed": false}}]})",
+                                   ".", "inline");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  ASSERT_TRUE(scene->objects[0].mirror.has_value());
+  EXPECT_TRUE(scene->objects[0].mirror->twoSided());
+  EXPECT_FALSE(sceneProblem(*scene).has_value());
+}
+
 TEST(SceneLoader, AnIncludePlaysItsChosenAnimationsWhereItIsPlaced) {
   Result<Scene> scene = loadSceneFile(fs::path(SPECULA_TEST_DATA_DIR) / "gltf" / "animated-includes.json");
   ASSERT_TRUE(scene.ok()) << scene.error();

@@ -73,11 +73,7 @@ MirrorInfo readMirror(const JsonNode& node, const NameIndex& meshes) {
   }
   const std::optional<JsonNode> twin = node.find("closed_twin");
   const std::optional<JsonNode> closed = node.find("closed");
-  mirror.closed = closed ? closed->boolean() : !twin;
-  if (!mirror.closed && !twin)
-    node.fail(
-        "an open mirror (\"closed\": false) needs \"closed_twin\": a closed mesh of the same surface for the "
-        "reflection search");
+  mirror.closed = closed ? closed->boolean() : !twin;  // open without a twin: two-sided, ray-cast
   if (mirror.closed && twin) twin->fail("only an open mirror takes a closed twin; drop it or set \"closed\": false");
   if (twin) mirror.closedTwinMesh = meshes.find(*twin);
   if (const auto analytic = node.find("analytic")) mirror.analytic = readAnalyticShape(*analytic);

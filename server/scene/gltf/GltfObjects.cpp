@@ -81,14 +81,14 @@ Status ObjectPlacer::addObject(Mesh part, int material) {
   scene.meshes.push_back(std::move(part));
   object.mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
   object.material = converted->index;
-  if (converted->chrome && closed) {
+  if (converted->chrome) {
     object.mirror = MirrorInfo{};
     object.mirror->curvature = MirrorCurvature::Mixed;
-  } else if (converted->chrome) {
-    scene.materials[converted->index].reflectivity = 0.0f;
-    imported_.scene.notes.push_back(
-        "'" + object.name +
-        "' has a mirror material but an open mesh (a mirror needs a closed one): drawn in its colour");
+    object.mirror->closed = closed;
+    if (!closed)
+      imported_.scene.notes.push_back("'" + object.name +
+                                      "' is an open mesh: a two-sided mirror whose reflections are ray-cast (only a "
+                                      "closed mesh can be searched)");
   }
   scene.objects.push_back(std::move(object));
   return {};

@@ -17,7 +17,7 @@
 namespace specula::scene::gltf {
 
 // Adds node meshes to the imported scene, each object under a name unique in the scene, with its
-// material (a chrome one on a closed mesh makes it a mirror of mixed curvature); at most
+// material (a chrome one makes it a mirror of mixed curvature, two-sided where its mesh is open); at most
 // kMaxVerticesPerScene vertices in all.
 class ObjectPlacer {
  public:

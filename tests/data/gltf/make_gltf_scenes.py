@@ -13,6 +13,9 @@
       by LINEAR rotation keys), a green box halves in size at 1 s (STEP scale) and a blue box crosses in
       front (CUBICSPLINE translation), all in the animation "show" (2 s); the camera dollies in over 4 s
       in the animation "dolly".
+  open-chrome.glb: open chrome meshes, two-sided mirrors: a bowl (a sphere's lower half, no lid) and a
+      half-pipe panel (half a cylinder's side, no caps) on a floor between a red box in front and a green
+      box behind, a camera looking down at them from the front.
   engine.glb: a two-cylinder engine of 29 meshes on 82 nodes up to five deep (TRS and matrices,
       meshes instanced on several nodes), painted, cast, aluminium, rubber, copper and chrome parts
       (the chrome valve covers, exhaust headers, flywheel and oil cap become mirrors), two
@@ -317,6 +320,60 @@ def textured_box():
         f.write(crate_png())
 
 
+def bowl(radius, rings, segments):
+    """A sphere's lower half, open at the equator: smooth normals outwards, fronts outwards."""
+    positions, normals = [], []
+    for r in range(rings + 1):
+        theta = math.pi / 2 + math.pi / 2 * r / rings
+        for s in range(segments):
+            phi = 2.0 * math.pi * s / segments
+            n = [math.sin(theta) * math.cos(phi), math.cos(theta), -math.sin(theta) * math.sin(phi)]
+            positions.append([radius * c for c in n])
+            normals.append(n)
+    indices = []
+    for r in range(rings):
+        for s in range(segments):
+            a, b = r * segments + s, r * segments + (s + 1) % segments
+            c, d = a + segments, b + segments
+            indices += [a, c, d, a, d, b]
+    return positions, normals, indices
+
+
+def half_pipe(radius, height, slices):
+    """Half a cylinder's side about y (x ≥ 0 turned to face +z), no caps: normals outwards."""
+    positions, normals, indices = [], [], []
+    for y in (-height / 2, height / 2):
+        for i in range(slices + 1):
+            a = math.pi * i / slices
+            n = [math.cos(a), 0.0, math.sin(a)]
+            positions.append([radius * n[0], y, radius * n[2]])
+            normals.append(n)
+    for i in range(slices):
+        top = slices + 1
+        indices += [i, i + 1 + top, i + 1, i, i + top, i + 1 + top]
+    return positions, normals, indices
+
+
+def open_chrome():
+    g = Builder()
+    chrome = g.material("chrome", (0.95, 0.95, 0.95), 1.0, 0.02)
+    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
+    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
+    green = g.material("green", (0.1, 0.7, 0.2), 0.0, 0.6)
+    nodes = [
+        g.node(name="bowl", mesh=g.mesh("bowl", *bowl(1.0, 12, 48), chrome), translation=[-1.4, 1.1, 0]),
+        g.node(name="panel", mesh=g.mesh("panel", *half_pipe(0.9, 1.6, 48), chrome), translation=[1.4, 0.8, 0]),
+        g.node(name="floor", mesh=g.mesh("floor", *quad(5.0), grey)),
+        g.node(name="red box", mesh=g.mesh("red box", *box((0.4, 0.4, 0.4)), red), translation=[0.2, 0.4, 2.2]),
+        g.node(name="green box", mesh=g.mesh("green box", *box((0.5, 0.5, 0.5)), green), translation=[0, 0.5, -2.5]),
+    ]
+    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
+    tilt = math.radians(-22.0) / 2
+    nodes.append(g.node(name="camera", camera=0, translation=[0, 3.2, 7], rotation=[math.sin(tilt), 0, 0, math.cos(tilt)]))
+    g.doc["scenes"] = [{"nodes": nodes}]
+    g.write_glb("open-chrome.glb")
+
+
 def animated():
     g = Builder()
     chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
@@ -455,4 +512,5 @@ if __name__ == "__main__":
     chrome_sphere()
     textured_box()
     animated()
+    open_chrome()
     engine()

@@ -320,6 +320,13 @@ def textured_box():
         f.write(crate_png())
 
 
+def camera_looking_down(g, yfov, translation, degrees):
+    """The file's one perspective camera on a node at `translation`, tilted `degrees` down about x."""
+    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": yfov, "znear": 0.1}}]
+    tilt = math.radians(-degrees) / 2
+    return g.node(name="camera", camera=0, translation=translation, rotation=[math.sin(tilt), 0, 0, math.cos(tilt)])
+
+
 def bowl(radius, rings, segments):
     """A sphere's lower half, open at the equator: smooth normals outwards, fronts outwards."""
     positions, normals = [], []
@@ -367,9 +374,7 @@ def open_chrome():
         g.node(name="red box", mesh=g.mesh("red box", *box((0.4, 0.4, 0.4)), red), translation=[0.2, 0.4, 2.2]),
         g.node(name="green box", mesh=g.mesh("green box", *box((0.5, 0.5, 0.5)), green), translation=[0, 0.5, -2.5]),
     ]
-    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
-    tilt = math.radians(-22.0) / 2
-    nodes.append(g.node(name="camera", camera=0, translation=[0, 3.2, 7], rotation=[math.sin(tilt), 0, 0, math.cos(tilt)]))
+    nodes.append(camera_looking_down(g, 0.7, [0, 3.2, 7], 22.0))
     g.doc["scenes"] = [{"nodes": nodes}]
     g.write_glb("open-chrome.glb")
 
@@ -390,9 +395,7 @@ def animated():
     green_box = g.node(name="green box", mesh=cube("green box", green), translation=[-2.5, 0.4, -2.6])
     blue_box = g.node(name="blue box", mesh=cube("blue box", blue), translation=[-1.5, 0.4, 2.6])
     ground = g.node(name="floor", mesh=floor)
-    g.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]
-    tilt = math.radians(-15.0) / 2
-    camera = g.node(name="camera", camera=0, translation=[0, 3, 9], rotation=[math.sin(tilt), 0, 0, math.cos(tilt)])
+    camera = camera_looking_down(g, 0.8, [0, 3, 9], 15.0)
     g.doc["extensionsUsed"] = ["KHR_lights_punctual"]
     g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3.0}]}}
     sun = g.node(name="sun", rotation=[-0.3826834, 0.2, 0, 0.9], extensions={"KHR_lights_punctual": {"light": 0}})

@@ -23,7 +23,7 @@ std::vector<OptionSpec> sceneChoiceOptions() {
            "with a glTF --scene: which of its animations play: all, none, or one by name or index", "all"},
           {"environment", "sky|none|FILE",
            "what the background and every mirror show where rays meet nothing: the procedural sky, the scene's "
-           "background colour, or an equirectangular PNG or JPEG",
+           "background colour, or an equirectangular PNG, JPEG or Radiance .hdr image",
            "the scene's (sky for glTF files and scene files without a background)"}};
 }
 

@@ -29,8 +29,8 @@ struct Environment {
 // The environment "sky" or "none" (the scene's background colour) names, or nullopt for any other word.
 std::optional<Environment> namedEnvironment(std::string_view name);
 
-// Makes the equirectangular PNG or JPEG `file` the scene's environment (its u wraps round, its v stops at
-// the poles), its texels counted against the scene's texture budget. Fails naming the file and the fix.
+// Makes the equirectangular PNG, JPEG or Radiance .hdr `file` the scene's environment (its u wraps round, its v stops
+// at the poles), its texels counted against the scene's texture budget. Fails naming the file and the fix.
 Status useEnvironmentImage(Scene& scene, const std::filesystem::path& file);
 
 // `choice` as --environment takes it: "sky", "none" (the scene's background colour) or an image file.

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "math/Color.h"
+#include "scene/RadianceImage.h"
 
 namespace specula::scene {
 
@@ -127,11 +128,16 @@ Result<Texture> decodeTexture(std::string_view bytes, std::string name) {
   if (bytes.empty()) return Error{name + ": the image is empty"};
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     return Error{name + ": the image file is too large to decode"};
-  // Only the two formats glTF allows are read: stb_image's other decoders crash Debian's build on hostile
-  // PNM files, and its JPEG decoder asserts (aborts the process) on some corrupt ones, all found by fuzzing.
+  // The two formats glTF allows and Radiance's, each by a decoder that survives fuzzing: stb_image's other
+  // decoders crash Debian's build on hostile PNM files, and its JPEG decoder asserts (aborts) on corrupt ones.
+  if (bytes.starts_with("#?")) {
+    Result<RadianceImage> radiance = decodeRadiance(bytes, name, kMaxTextureSide);
+    if (!radiance) return Error{radiance.error()};
+    return textureFromPixels(std::move(name), radiance->width, radiance->height, std::move(radiance->rgba));
+  }
   const bool png = bytes.starts_with("\x89PNG\r\n\x1a\n"), jpeg = bytes.starts_with("\xff\xd8\xff");
   if (!png && !jpeg)
-    return Error{name + ": not an image this build reads (neither PNG nor JPEG); convert it to PNG or JPEG"};
+    return Error{name + ": not an image this build reads (PNG, JPEG or Radiance .hdr); convert it to one of them"};
   Result<DecodedImage> image = jpeg ? decodeJpeg(bytes, name) : decodePng(bytes, name);
   if (!image) return Error{image.error()};
   return textureFromPixels(std::move(name), image->width, image->height, std::move(image->rgba));

@@ -1,5 +1,6 @@
 #pragma once
-// Colour textures: decoded once at load (PNG through stb_image, JPEG through libjpeg-turbo), their mip chain built
+// Colour textures: decoded once at load (PNG through stb_image, JPEG through libjpeg-turbo, Radiance .hdr
+// through scene/RadianceImage, clamped to [0, 1]), their mip chain built
 // here in linear light, so the GPU (passes/GpuTextures uploads these very levels) and the reference's
 // sampler (reference/TextureSampler) filter the same texels.
 #include <cstddef>
@@ -33,9 +34,9 @@ struct Texture {
   std::size_t texelCount() const;  // all levels
 };
 
-// The image in `bytes` (PNG or JPEG) as RGBA8, its mip chain built by averaging 2×2
+// The image in `bytes` (PNG, JPEG or Radiance .hdr) as RGBA8, its mip chain built by averaging 2×2
 // texels in linear light (an odd side folds its last row or column into the one before). Fails,
-// naming `name` and the fix, on bytes that are no image stb_image reads, a truncated or corrupt
+// naming `name` and the fix, on bytes that are no image of those formats, a truncated or corrupt
 // image, or a side over kMaxTextureSide (checked from the header, before decoding).
 Result<Texture> decodeTexture(std::string_view bytes, std::string name);
 

@@ -42,6 +42,7 @@ fails_with "an unknown animation lists the file's" \
 output=$("$specula" render --scene "$(dirname "$0")/../data/gltf/open-chrome.glb" --ray-cast never --size 96x72 --samples 1 --out "$work/open.png" 2>&1)
 check "an open chrome mesh is a two-sided mirror, ray-cast with --ray-cast never too" contains "$output" "'bowl' is an open mesh: a two-sided mirror whose reflections are ray-cast" \
   "plan: mirror 'bowl' part 0 (saddle, .*): ray-cast (an open mesh: only a closed one is searched) "
+check "a Radiance .hdr image is an environment" "$specula" render --environment "$(dirname "$0")/../data/scenes/good/assets/sky.hdr" --size 96x72 --samples 1 --out "$work/hdr.png"
 fails_with "eye on target is refused" "bad camera: camera eye and target coincide" render --eye 0,0,0 --target 0,0,0
 fails_with "an unknown output format is refused" "--out must end in .png, .jpg or .jpeg" render --out "$work/f.bmp"
 fails_with "an unknown option is refused" "unknown option --colour" render --colour red

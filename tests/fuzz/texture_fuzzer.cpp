@@ -1,4 +1,4 @@
-// Texture files (PNG, JPEG and whatever else the decoders read) as scenes and glTF images decode them.
+// Texture files (PNG, JPEG, Radiance .hdr and whatever else the decoders read) as scenes and glTF images decode them.
 #include <stb/stb_image.h>
 #include <turbojpeg.h>
 

@@ -57,13 +57,65 @@ TEST(Texture, GarbageIsRefusedByNameBeforeAnyLargeAllocation) {
   };
   refused("", "the image is empty");
   refused("plain words, no image", "not an image this build reads");
-  refused("GIF89a and a header of nonsense", "neither PNG nor JPEG");
-  refused("P5\n9 9\n255\n", "neither PNG nor JPEG");  // stb's PNM reader crashed on such headers
+  refused("GIF89a and a header of nonsense", "(PNG, JPEG or Radiance .hdr)");
+  refused("P5\n9 9\n255\n", "(PNG, JPEG or Radiance .hdr)");  // stb's PNM reader crashed on such headers
   refused("\x89PNG\r\n\x1a\n and a header of nonsense", "not an image this build reads");
   refused(fileBytes(kAssets / "bad" / "assets" / "not-an-image.png"), "not an image this build reads");
   refused(fileBytes(kAssets / "bad" / "assets" / "truncated.png"), "the image cannot be decoded");
   refused(fileBytes(kAssets / "bad" / "assets" / "huge.png"),
           "the image is 9000x16 texels; a texture side must be 1..8192");
+}
+
+// A Radiance file: the header, the resolution line and `scanlines` as written.
+std::string radiance(int width, int height, const std::string& scanlines,
+                     const std::string& header = "FORMAT=32-bit_rle_rgbe\n") {
+  return "#?RADIANCE\n" + header + "\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n" + scanlines;
+}
+
+std::string bytesOf(std::initializer_list<int> values) {
+  std::string bytes;
+  for (int v : values) bytes += static_cast<char>(v);
+  return bytes;
+}
+
+// RGBE (128, 64, 32, 129) is (128, 64, 32) × 2^(129 − 136) = (1, 0.5, 0.25) in linear light, sRGB (255, 188, 137);
+// exponent 0 is black; (255, 255, 255, 140) is 16 × brighter than white, clamped to it.
+TEST(Texture, DecodesRadianceImagesFlatAndRunLengthEncoded) {
+  const std::string flat =
+      radiance(2, 2, bytesOf({128, 64, 32, 129, 0, 0, 0, 0, 255, 255, 255, 140, 128, 64, 32, 129}));
+  auto texture = scene::decodeTexture(flat, "flat.hdr");
+  ASSERT_TRUE(texture) << texture.error();
+  const auto& texels = texture->levels.front().rgba;
+  ASSERT_EQ(texels.size(), 16u);
+  EXPECT_EQ(std::vector<std::uint8_t>(texels.begin(), texels.begin() + 12),
+            (std::vector<std::uint8_t>{255, 188, 137, 255, 0, 0, 0, 255, 255, 255, 255, 255}));
+  // 8 texels a row, run-length encoded: each channel one run of 8 (128 + 8), except blue as 8 literals.
+  std::string row = bytesOf({2, 2, 0, 8, 136, 128, 136, 64, 8, 32, 32, 32, 32, 32, 32, 32, 32, 136, 129});
+  auto encoded = scene::decodeTexture(radiance(8, 2, row + row), "encoded.hdr");
+  ASSERT_TRUE(encoded) << encoded.error();
+  for (std::size_t texel = 0; texel < 16; ++texel) EXPECT_EQ(encoded->levels.front().rgba[4 * texel + 1], 188) << texel;
+  EXPECT_EQ(scene::decodeTexture("#?RGBE\n\n-Y 1 +X 1\n" + bytesOf({128, 64, 32, 129}), "rgbe.hdr")->levels[0].rgba[2],
+            137);
+}
+
+TEST(Texture, BrokenRadianceImagesAreRefusedByWhatIsWrong) {
+  const auto refused = [](const std::string& bytes, const std::string& expected) {
+    auto texture = scene::decodeTexture(bytes, "sky.hdr");
+    ASSERT_FALSE(texture) << expected;
+    EXPECT_NE(texture.error().find(expected), std::string::npos) << texture.error();
+  };
+  const std::string texel = bytesOf({128, 64, 32, 129});
+  refused("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n", "the Radiance header does not end");
+  refused(radiance(1, 1, texel, "FORMAT=32-bit_rle_xyze\n"), "FORMAT=32-bit_rle_xyze is not read");
+  refused("#?RADIANCE\n\n+Y 1 +X 1\n" + texel, "must read \"-Y <height> +X <width>\"");
+  refused(radiance(9000, 1, ""), "the image is 9000x1 texels; a texture side must be 1..8192");
+  refused(radiance(8192, 8192, std::string(4096, '\x01')), "4096 bytes cannot hold 8192 scanlines");
+  refused(radiance(2, 1, texel), "4 bytes cannot hold 1 scanlines of 2 texels");
+  refused(radiance(8, 1, std::string(20, '\x01')), "scanline 0 is truncated");  // flat: 32 bytes
+  // A run of 9 in a row of 8, and a run that promises more bytes than follow.
+  refused(radiance(8, 1, bytesOf({2, 2, 0, 8, 137, 1}) + std::string(32, '\x01')),
+          "a run past the end of its scanline");
+  refused(radiance(8, 1, bytesOf({2, 2, 0, 8, 8, 1, 2})) + std::string(21, '\x01'), "scanline 0 is truncated");
 }
 
 TEST(Texture, MipLevelsAverageInLinearLight) {

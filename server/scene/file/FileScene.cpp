@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "sky", "none" (the background colour) or {"image": "file.jpg"}: an equirectangular PNG or JPEG beside the scene.
+// "sky", "none" (the background colour) or {"image": "file.jpg"}: an equirectangular PNG, JPEG or .hdr beside the
+// scene.
 void readEnvironment(const JsonNode& node, const fs::path& baseDir, Scene& scene) {
   if (node.isString()) {
     const auto named = namedEnvironment(node.string());

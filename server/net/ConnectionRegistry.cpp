@@ -2,32 +2,44 @@
 
 #include <vector>
 
+#include "net/WebSocketConnection.h"
+
 namespace specula::net {
 
-void ConnectionRegistry::add(const std::shared_ptr<MessageSink>& sink) {
+void ConnectionRegistry::add(const std::shared_ptr<WebSocketConnection>& connection) {
   std::lock_guard lock(mutex_);
-  sinks_[sink.get()] = sink;
+  connections_[connection.get()] = connection;
 }
 
-void ConnectionRegistry::remove(const MessageSink* sink) {
+void ConnectionRegistry::remove(const WebSocketConnection* connection) {
   std::lock_guard lock(mutex_);
-  sinks_.erase(sink);
+  connections_.erase(connection);
 }
 
 std::size_t ConnectionRegistry::size() const {
   std::lock_guard lock(mutex_);
-  return sinks_.size();
+  return connections_.size();
+}
+
+std::vector<std::shared_ptr<WebSocketConnection>> ConnectionRegistry::open() const {
+  std::vector<std::shared_ptr<WebSocketConnection>> open;
+  std::lock_guard lock(mutex_);
+  for (const auto& [raw, weak] : connections_)
+    if (auto connection = weak.lock()) open.push_back(std::move(connection));
+  return open;
 }
 
 std::size_t ConnectionRegistry::closeAll(CloseCode code, const std::string& reason) {
-  std::vector<std::shared_ptr<MessageSink>> open;
-  {
-    std::lock_guard lock(mutex_);
-    for (const auto& [raw, weak] : sinks_)
-      if (auto sink = weak.lock()) open.push_back(std::move(sink));
-  }
-  for (const auto& sink : open) sink->close(code, reason);  // outside the lock: close may re-enter remove()
-  return open.size();
+  const auto connections = open();
+  // Outside the lock: closing may re-enter remove().
+  for (const auto& connection : connections) connection->close(code, reason);
+  return connections.size();
+}
+
+std::size_t ConnectionRegistry::abandonAll() {
+  const auto connections = open();
+  for (const auto& connection : connections) connection->abandon();
+  return connections.size();
 }
 
 std::shared_ptr<void> ConnectionRegistry::openConnection() {

@@ -107,6 +107,7 @@ void HttpServer::shutdown(std::chrono::milliseconds grace, CloseCode code) {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     state_->io.stop();
     for (std::thread& thread : state_->threads) thread.join();
+    state_->registry.abandonAll();  // those whose close handshake outlasted the grace
   });
 }
 

@@ -30,6 +30,9 @@ class WebSocketConnection : public MessageSink, public std::enable_shared_from_t
   void sendControl(std::string payload) override;
   void sendFrame(std::string payload) override;
   void close(CloseCode code, std::string reason) override;
+  // Ends the connection now, without a close handshake: for shutdown, once no thread runs its handlers,
+  // so the session it holds (and that holds it) is released.
+  void abandon() { finish(); }
 
  private:
   struct PendingClose {

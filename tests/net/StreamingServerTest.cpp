@@ -459,6 +459,18 @@ TEST(StreamingServerTiming, ShutdownClosesEveryClientWithGoingAwayWithinASecond)
   EXPECT_LT(std::chrono::steady_clock::now() - start, 1s);
 }
 
+TEST(StreamingServer, ShutdownReleasesTheSessionOfAClientThatNeverAnswersTheCloseFrame) {
+  ServerRig rig;
+  auto silent = rig.connect(Encoding::Proto);
+  ASSERT_TRUE(silent);
+  greet(*silent);
+  ASSERT_EQ(rig.hub().sessionCount(), 1u);
+  // The client reads nothing more, so the close handshake cannot finish within the grace.
+  rig.server().shutdown(20ms);
+  EXPECT_EQ(rig.hub().sessionCount(), 0u) << "the connection and its session held each other";
+  EXPECT_EQ(rig.server().openWebSockets(), 0u);
+}
+
 // A raw TCP connection that sends `bytes` (maybe nothing) and then only listens; returns whether the
 // server closed it within `within`.
 bool serverHangsUpOn(std::uint16_t port, const std::string& bytes, std::chrono::milliseconds within) {

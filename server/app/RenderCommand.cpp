@@ -17,6 +17,7 @@
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "math/SamplePattern.h"
+#include "scene/Deformation.h"
 #include "scene/ScenePose.h"
 
 namespace specula::app {
@@ -172,8 +173,11 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
         "measured here, "
         "%.2f, %.2f)\n",
         scene.objects[mirror.mirrorObject].name.c_str(), mirror.part, surfaceName(mirror.kind), mirror.projectedPixels,
-        mirror.method == passes::PartMethod::RayCast && scene.objects[mirror.mirrorObject].mirror->twoSided()
+        mirror.method != passes::PartMethod::RayCast ? methodWords(mirror.method)
+        : scene.objects[mirror.mirrorObject].mirror->twoSided()
             ? "ray-cast (an open mesh: only a closed one is searched)"
+        : scene::deforms(scene, mirror.mirrorObject)
+            ? "ray-cast (a mirror that changes shape: its parts' curvature is not known each frame)"
             : methodWords(mirror.method),
         mirror.searchedObjects, mirror.searchedVertices, mirror.culledObjects, mirror.culledVertices,
         mirror.facesAway ? "the part faces away from the eye" : "behind it or in its shadow", mirror.belowBudgetObjects,

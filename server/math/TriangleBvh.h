@@ -13,7 +13,7 @@ namespace specula::math {
 
 class TriangleBvh {
  public:
-  // std430 twin of BvhNode in triangle-bvh.glsl. An inner node's children are at `first` and
+  // std430 twin of BvhNode in triangle-bvh-records.glsl. An inner node's children are at `first` and
   // first + 1; a leaf (count > 0) holds triangles first .. first + count − 1 of triangles().
   struct Node {
     glm::vec3 low;
@@ -21,7 +21,7 @@ class TriangleBvh {
     glm::vec3 high;
     std::uint32_t count;
   };
-  static_assert(sizeof(Node) == 32, "must match BvhNode in triangle-bvh.glsl");
+  static_assert(sizeof(Node) == 32, "must match BvhNode in triangle-bvh-records.glsl");
 
   // std430 twin of BvhTriangle: corners in the mesh's space and the mesh's index of the triangle.
   struct Triangle {
@@ -32,7 +32,7 @@ class TriangleBvh {
     glm::vec3 c;
     float unused1;
   };
-  static_assert(sizeof(Triangle) == 48, "must match BvhTriangle in triangle-bvh.glsl");
+  static_assert(sizeof(Triangle) == 48, "must match BvhTriangle in triangle-bvh-records.glsl");
 
   struct Hit {
     float distance;          // along the (not necessarily unit) direction, in its units

@@ -167,7 +167,8 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
     const glm::mat4& mirrorToWorld = pose.objectToWorld[mirror.mirrorObject];
     const math::Bounds& mirrorBounds = worldBounds[mirror.mirrorObject];
     // The part's own pixels: one part of a mirror casts and searches over its share of the mirror only.
-    const double pixels = projectedPixels(mirror.reach.bounds.transformed(mirrorToWorld), camera, frameSize);
+    const double pixels = projectedPixels(
+        mirror.deforms ? mirrorBounds : mirror.reach.bounds.transformed(mirrorToWorld), camera, frameSize);
     const bool search = settings.method == ReflectionMethod::Search;
     PartMethod method =
         settings.method == ReflectionMethod::EnvironmentMap ? PartMethod::EnvironmentMap : PartMethod::VirtualObjects;
@@ -198,9 +199,10 @@ FramePlan planFrame(const ReflectionSlots& slots, const scene::ScenePose& pose,
     }
     planned.fittedCost = predictPartCost(pixels, planned.reflected);
     planned.cost = {planned.fittedCost.search * rates.search, planned.fittedCost.rayCast * rates.rayCast};
-    // A search on an open surface would pin reflection points that lie past its rim to the rim: a two-sided
-    // mirror is cast whatever the settings ask.
-    if (method == PartMethod::VirtualObjects && search && mirror.twoSided)
+    // A search on an open surface would pin reflection points that lie past its rim to the rim, and one on a
+    // deforming surface would trust curvature classes found on its rest shape: such mirrors are cast whatever
+    // the settings ask.
+    if (method == PartMethod::VirtualObjects && search && (mirror.twoSided || mirror.deforms))
       method = planned.method = PartMethod::RayCast;
     if (method == PartMethod::VirtualObjects && search && !everything &&
         (settings.rayCast == RayCastRule::Always ||

@@ -38,9 +38,12 @@ constexpr float kGridDeviationsSkipped = 4.0f;
 
 }  // namespace
 
-ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots)
+ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots,
+                                         const GpuMeshes& meshes, const GpuDeformation& deformation)
     : gl_(&gl),
       scene_(scene),
+      meshes_(meshes),
+      deformation_(deformation),
       slots_(slots),
       position_(gl),
       normal_(gl),
@@ -70,7 +73,10 @@ ReflectionResources::ReflectionResources(const gl::GlApi& gl, const scene::Scene
 }
 
 const ReflectionResources::MeshBvh& ReflectionResources::meshBvh(std::uint32_t mesh) {
-  if (const auto built = meshBvhs_.find(mesh); built != meshBvhs_.end()) return built->second;
+  if (const auto built = meshBvhs_.find(mesh); built != meshBvhs_.end()) {
+    if (deformation_.deforms(mesh)) deformation_.refit(built->second, mesh, meshes_);
+    return built->second;
+  }
   const scene::Mesh& source = scene_.meshes[mesh];
   std::vector<glm::vec3> positions;
   positions.reserve(source.vertices.size());
@@ -80,7 +86,8 @@ const ReflectionResources::MeshBvh& ReflectionResources::meshBvh(std::uint32_t m
     bounds.add(v.position);
   }
   const math::TriangleBvh bvh = math::TriangleBvh::build(positions, source.indices);
-  MeshBvh& buffers = meshBvhs_.emplace(mesh, MeshBvh{gl::GlBuffer(*gl_), gl::GlBuffer(*gl_), 0.0f}).first->second;
+  MeshBvh& buffers =
+      meshBvhs_.emplace(mesh, MeshBvh{gl::GlBuffer(*gl_), gl::GlBuffer(*gl_), 0.0f, {}, {}, 0}).first->second;
   upload(*gl_, buffers.nodes, bvh.nodes());
   upload(*gl_, buffers.triangles, bvh.triangles());
   gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -88,6 +95,24 @@ const ReflectionResources::MeshBvh& ReflectionResources::meshBvh(std::uint32_t m
   // ray starts on the exact surface and may meet the grid's chords a few deviations along, grazing.
   buffers.minDistance = std::max(1e-4f * std::max(bounds.radius(), 1e-30f),
                                  kGridDeviationsSkipped * static_cast<float>(source.gridDeviation));
+  if (!deformation_.deforms(mesh) || bvh.nodes().empty()) return buffers;
+  // Built over the rest shape: refitted level by level to the shape the mesh has now, and every frame after.
+  std::vector<std::uint32_t> depth(bvh.nodes().size(), 0);
+  std::vector<std::vector<std::uint32_t>> levels;
+  for (std::uint32_t n = 0; n < bvh.nodes().size(); ++n) {  // children come after their parent
+    if (levels.size() <= depth[n]) levels.resize(depth[n] + 1);
+    levels[depth[n]].push_back(n);
+    const math::TriangleBvh::Node& node = bvh.nodes()[n];
+    if (node.count == 0) depth[node.first] = depth[node.first + 1] = depth[n] + 1;
+  }
+  std::vector<std::uint32_t> order;
+  for (auto level = levels.rbegin(); level != levels.rend(); ++level) {
+    buffers.levels.push_back({static_cast<std::uint32_t>(order.size()), static_cast<std::uint32_t>(level->size())});
+    order.insert(order.end(), level->begin(), level->end());
+  }
+  upload(*gl_, buffers.levelOrder.emplace(*gl_), order);
+  gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  deformation_.refit(buffers, mesh, meshes_);
   return buffers;
 }
 

@@ -12,6 +12,9 @@
 #include "gl/GlApi.h"
 #include "gl/GlObject.h"
 #include "gl/ShaderProgram.h"
+#include "passes/GpuMeshes.h"
+#include "passes/GpuDeformation.h"
+#include "passes/MeshBvh.h"
 #include "passes/ReflectedVertex.h"
 #include "passes/ReflectionSettings.h"
 #include "passes/ReflectionSlots.h"
@@ -31,14 +34,11 @@ class ReflectionResources {
  public:
   static constexpr int kCoarsestSide = 8;  // the cold start scans a pyramid level at most this big
 
-  // The hierarchy of a mesh on the GPU (shaders/common/triangle-bvh.glsl), for casting reflected
-  // rays against it: a mirror's own mesh where it may see itself, an object's in a ray-cast part.
-  struct MeshBvh {
-    gl::GlBuffer nodes, triangles;
-    float minDistance = 0.0f;  // object space: hits nearer the ray's start are the surface it starts on
-  };
+  using MeshBvh = passes::MeshBvh;
 
-  ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots);
+  // `meshes` and `deformation` are the scene's, and outlive this.
+  ReflectionResources(const gl::GlApi& gl, const scene::Scene& scene, const ReflectionSlots& slots,
+                      const GpuMeshes& meshes, const GpuDeformation& deformation);
 
   // Sizes the G-buffer for a width × height frame with `margin` pixels added on each side, at
   // `texelsPerPixel` texels per pixel and `precision`; reallocates (and forgets every texel) only
@@ -69,7 +69,7 @@ class ReflectionResources {
   // The part of each triangle of a mirror's search mesh (bytes, four to a uint), for mirrors of several parts.
   GLuint triangleParts(std::size_t mirrorObject) const { return triangleParts_.at(mirrorObject).id(); }
   // The hierarchy of a mesh (a mirror's own where it sees itself, an object's in a ray-cast part),
-  // built on first use and kept (meshes do not change; objects move rigidly).
+  // built on first use and kept; a deforming mesh's is refitted to the shape the mesh has now.
   const MeshBvh& meshBvh(std::uint32_t mesh);
   // The ray hierarchy (shaders/common/ray-hierarchy.glsl) at the G-buffer's size, one layer per
   // mirror part, levels down to one texel: allocated by the first call after the G-buffer is sized.
@@ -116,6 +116,8 @@ class ReflectionResources {
  private:
   const gl::GlApi* gl_;
   const scene::Scene& scene_;
+  const GpuMeshes& meshes_;
+  const GpuDeformation& deformation_;
   const ReflectionSlots& slots_;
   glm::ivec2 size_{0}, margin_{0}, coveredPixels_{0};
   GBufferPrecision precision_ = GBufferPrecision::Float32;

@@ -1,5 +1,7 @@
 #include "passes/ReflectionSlots.h"
 
+#include "scene/Deformation.h"
+
 #include <algorithm>
 
 #include <glm/geometric.hpp>
@@ -37,16 +39,20 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
       parts = scene::MirrorParts::of(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], info.curvature);
       slots.parts.emplace(m, parts);
     }
-    // Seen from behind, a two-sided mirror's convex side is concave: its parts are planned as saddles.
-    if (info.twoSided())
+    const bool deforms = scene::deforms(scene, m);
+    // Seen from behind, a two-sided mirror's convex side is concave; a deforming mirror's curvature changes:
+    // their parts are planned as saddles.
+    if (info.twoSided() || deforms)
       for (scene::MirrorPart& part : parts.parts) part.kind = scene::SurfaceKind::Saddle;
-    const bool seesItself = object.reflected && !exactQuadric && !parts.cannotSeeItself(info.closed);
+    const bool seesItself =
+        object.reflected && !exactQuadric && (deforms || !parts.cannotSeeItself(info.closed));
     for (std::size_t p = 0; p < parts.parts.size(); ++p) {
       MirrorReach reach = exactQuadric
                               ? MirrorReach::ofQuadric(*info.analytic)
                               : MirrorReach::ofMeshPart(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], parts,
                                                         p, parts.cannotSeeItself(info.closed));
       if (info.twoSided()) reach.normalCosine = -1.0f;  // its normals, turned to the eye, point either way
+      if (deforms) reach = MirrorReach{};                // its rest shape bounds nothing of the frame's
       MirrorSlots mirror{m,
                          static_cast<int>(slots.mirrors.size()),
                          stencil,
@@ -57,7 +63,8 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
                          reach,
                          {},
                          info.extrusion.has_value(),
-                         info.twoSided()};
+                         info.twoSided(),
+                         deforms};
       for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         if (o == m || !scene.objects[o].reflected) continue;
         const scene::Mesh& mesh = scene.meshes[scene.objects[o].mesh];

@@ -35,6 +35,10 @@ struct MirrorSlots {
   // An open mirror with no closed twin (scene::MirrorInfo::twoSided): its parts are always ray-cast,
   // seen from either side, so they are saddles reaching every way.
   bool twoSided = false;
+  // A mirror that changes shape (scene::deforms): its parts were found on its rest shape and their
+  // curvature can change as it deforms, so they are always ray-cast, as saddles reaching every way, and
+  // planned within the mirror's bounds of the frame (reach.bounds is empty).
+  bool deforms = false;
 };
 
 struct ReflectionSlots {

@@ -3,11 +3,13 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 #include <type_traits>
 
 #include "math/Transform.h"
 #include "reference/EmbreeError.h"
+#include "scene/Deformation.h"
 
 namespace specula::reference {
 
@@ -107,6 +109,18 @@ Result<std::unique_ptr<PosedScene>> PosedScene::build(RTCDevice device, const sc
     const scene::SceneObject& object = scene.objects[i];
     Geometry geometry{
         i, std::nullopt, nullptr, &scene.meshes[object.mesh], nullptr, math::normalMatrix(pose.objectToWorld[i])};
+    const std::span<const float> weights =
+        i < pose.morphWeights.size() ? std::span<const float>(pose.morphWeights[i]) : std::span<const float>();
+    const std::span<const glm::mat4> joints = i < pose.jointMatrices.size()
+                                                  ? std::span<const glm::mat4>(pose.jointMatrices[i])
+                                                  : std::span<const glm::mat4>();
+    if (!weights.empty() || !joints.empty()) {
+      auto deformed = std::make_unique<scene::Mesh>();
+      deformed->name = geometry.mesh->name;
+      deformed->vertices = scene::deformedVertices(*geometry.mesh, weights, joints);
+      deformed->indices = geometry.mesh->indices;
+      geometry.mesh = posed->deformedMeshes_.emplace_back(std::move(deformed)).get();
+    }
     // An open mirror's shape would also cover where the mesh has no surface, so only closed ones use it.
     if (object.mirror && object.mirror->exactQuadric())
       geometry.analytic.emplace(*object.mirror->analytic, pose.objectToWorld[i]);

@@ -76,7 +76,8 @@ class PosedScene {
                       const Departure* departure) const;
 
   RTCScene scene_;
-  std::vector<Geometry> geometries_;  // indexed by Embree geometry ID
+  std::vector<Geometry> geometries_;                          // indexed by Embree geometry ID
+  std::vector<std::unique_ptr<scene::Mesh>> deformedMeshes_;  // this pose's shapes of deforming meshes
 };
 
 }  // namespace specula::reference

@@ -53,13 +53,15 @@ bool isCpuRasterizer(const std::string& renderer) {
 
 }  // namespace
 
-Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots)
+Renderer::Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots,
+                   passes::GpuDeformation deformation)
     : context_(context),
       scene_(std::move(scene)),
       meshes_(context.api(), scene_->meshes),
+      deformation_(std::move(deformation)),
       textures_(context.api(), scene_->textures),
       slots_(std::move(slots)),
-      reflections_(context.api(), *scene_, slots_),
+      reflections_(context.api(), *scene_, slots_, meshes_, deformation_),
       readback_(context.api()),
       cpuRasterizer_(isCpuRasterizer(context.info().renderer)) {
   for (const scene::Mesh& mesh : scene_->meshes) {
@@ -86,7 +88,10 @@ Result<std::unique_ptr<Renderer>> Renderer::create(gl::GlContext& context, std::
   passes::ReflectionSlots slots = passes::ReflectionSlots::forScene(*scene);
   // Before any buffer exists: past these limits the search would read and write out of range.
   if (auto problem = passes::searchLimitProblem(gl, *scene, slots)) return Error{*problem};
-  std::unique_ptr<Renderer> renderer(new Renderer(context, std::move(scene), std::move(slots)));
+  Result<passes::GpuDeformation> deformation = passes::GpuDeformation::create(gl, *scene);
+  if (!deformation) return Error{deformation.error()};
+  std::unique_ptr<Renderer> renderer(
+      new Renderer(context, std::move(scene), std::move(slots), std::move(deformation.value())));
   for (Status status : {addPass(renderer->passes_, passes::ScenePass::create(gl)),
                         addPass(renderer->passes_, passes::MirrorGBufferPass::create(gl)),
                         addPass(renderer->passes_, passes::GBufferPyramidPass::create(gl)),
@@ -146,8 +151,11 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
 
   std::vector<math::Bounds> worldBounds;
   worldBounds.reserve(scene_->objects.size());
-  for (std::size_t i = 0; i < scene_->objects.size(); ++i)
-    worldBounds.push_back(meshBounds_[scene_->objects[i].mesh].transformed(pose.objectToWorld[i]));
+  for (std::size_t i = 0; i < scene_->objects.size(); ++i) {
+    const std::uint32_t mesh = scene_->objects[i].mesh;
+    const math::Bounds bounds = deformation_.deforms(mesh) ? deformation_.bounds(mesh, pose) : meshBounds_[mesh];
+    worldBounds.push_back(bounds.transformed(pose.objectToWorld[i]));
+  }
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   passes::FrameView view = frameView(pose.camera, worldBounds, aspect);
   const passes::FramePlan plan =
@@ -187,6 +195,7 @@ Result<RenderedFrame> Renderer::renderOnce(const scene::ScenePose& pose, int wid
     mark();
   };
   mark();
+  if (deformation_.apply(pose, meshes_)) endStage("deform");  // once a frame, before any pass reads a mesh
   // An anti-aliased frame is the plan's passes once per sample point, averaged (SampleAccumulator).
   const std::span<const glm::vec2> points = math::samplePattern(samples);
   if (samples > 1) {

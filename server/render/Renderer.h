@@ -16,6 +16,7 @@
 #include "math/Bounds.h"
 #include "passes/FrameContext.h"
 #include "passes/GpuMeshes.h"
+#include "passes/GpuDeformation.h"
 #include "passes/GpuTextures.h"
 #include "passes/MeasuredCosts.h"
 #include "passes/Pass.h"
@@ -129,7 +130,8 @@ class Renderer {
 
  private:
   using Clock = std::chrono::steady_clock;
-  Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots);
+  Renderer(gl::GlContext& context, std::shared_ptr<const scene::Scene> scene, passes::ReflectionSlots slots,
+           passes::GpuDeformation deformation);
   passes::FrameView frameView(const math::Camera& camera, const std::vector<math::Bounds>& worldBounds,
                               float aspect) const;
   // One try at render(): `tessellationOutgrown` says the frame's tessellation found its lists too
@@ -144,6 +146,7 @@ class Renderer {
   gl::GlContext& context_;
   std::shared_ptr<const scene::Scene> scene_;
   passes::GpuMeshes meshes_;
+  passes::GpuDeformation deformation_;  // writes deforming meshes into meshes_ before each frame's passes
   passes::GpuTextures textures_;
   std::vector<math::Bounds> meshBounds_;  // object space, per mesh
   passes::ReflectionSlots slots_;

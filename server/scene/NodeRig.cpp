@@ -63,11 +63,11 @@ std::vector<glm::dmat4> NodeRig::worldAt(double seconds) const {
     const double t = clipTime(seconds, clip.duration);
     for (const NodeChannel& channel : clip.channels) {
       RigNode& node = posed[channel.node];
-      const glm::dvec4 v = channel.at(t);
       switch (channel.property) {
-        case NodeProperty::Translation: node.translation = glm::dvec3(v); break;
-        case NodeProperty::Rotation: node.rotation = quaternion(v); break;
-        case NodeProperty::Scale: node.scale = glm::dvec3(v); break;
+        case NodeProperty::Translation: node.translation = glm::dvec3(channel.at(t)); break;
+        case NodeProperty::Rotation: node.rotation = quaternion(channel.at(t)); break;
+        case NodeProperty::Scale: node.scale = glm::dvec3(channel.at(t)); break;
+        case NodeProperty::Weights: break;  // weightsAt's
       }
     }
   }
@@ -78,6 +78,39 @@ std::vector<glm::dmat4> NodeRig::worldAt(double seconds) const {
     world[i] = node.parent ? world[*node.parent] * node.local() : node.local();
   }
   return world;
+}
+
+std::vector<std::vector<float>> NodeRig::weightsAt(double seconds) const {
+  std::vector<std::vector<float>> weights;
+  weights.reserve(morphed.size());
+  for (const MorphedObject& object : morphed) weights.push_back(object.restWeights);
+  for (const NodeClip& clip : clips) {
+    const double t = clipTime(seconds, clip.duration);
+    for (const NodeChannel& channel : clip.channels) {
+      if (channel.property != NodeProperty::Weights) continue;
+      const glm::dvec4 v = channel.at(t);
+      for (std::size_t m = 0; m < morphed.size(); ++m) {
+        if (morphed[m].node != channel.node) continue;
+        for (std::size_t c = 0; c < 4 && channel.firstWeight + c < weights[m].size(); ++c)
+          weights[m][channel.firstWeight + c] = static_cast<float>(v[static_cast<glm::length_t>(c)]);
+      }
+    }
+  }
+  return weights;
+}
+
+std::vector<std::vector<glm::mat4>> NodeRig::jointMatrices(const std::vector<glm::dmat4>& world) const {
+  std::vector<std::vector<glm::mat4>> matrices;
+  matrices.reserve(skinned.size());
+  for (const SkinnedObject& object : skinned) {
+    const RigSkin& skin = skins[object.skin];
+    const glm::dmat4 toMesh = glm::inverse(world[object.node]);
+    std::vector<glm::mat4>& joints = matrices.emplace_back();
+    joints.reserve(skin.joints.size());
+    for (std::size_t j = 0; j < skin.joints.size(); ++j)
+      joints.emplace_back(toMesh * world[skin.joints[j]] * skin.inverseBind[j]);
+  }
+  return matrices;
 }
 
 math::Camera NodeRig::cameraOf(const glm::dmat4& world, float fovYDegrees) {
@@ -107,7 +140,8 @@ std::optional<std::string> rigProblem(const NodeRig& rig, std::size_t objectCoun
     double last = 0.0;
     for (const NodeChannel& channel : clip.channels) {
       if (channel.node >= rig.nodes.size()) return where + "a channel's node is out of range";
-      if (rig.nodes[channel.node].matrix) return where + "a channel moves a matrix node";
+      if (rig.nodes[channel.node].matrix && channel.property != NodeProperty::Weights)
+        return where + "a channel moves a matrix node";
       if (channel.times.empty() || !(channel.times.front() >= 0.0)) return where + "a channel needs times from 0 on";
       for (std::size_t k = 0; k < channel.times.size(); ++k)
         if (!std::isfinite(channel.times[k]) || (k > 0 && !(channel.times[k] > channel.times[k - 1])))
@@ -121,6 +155,23 @@ std::optional<std::string> rigProblem(const NodeRig& rig, std::size_t objectCoun
   }
   for (const RiggedObject& rigged : rig.objects)
     if (rigged.object >= objectCount || rigged.node >= rig.nodes.size()) return "a rigged object is out of range";
+  for (const RigSkin& skin : rig.skins) {
+    if (skin.joints.empty() || skin.inverseBind.size() != skin.joints.size())
+      return "a skin needs joints and one inverse bind matrix each";
+    for (std::uint32_t joint : skin.joints)
+      if (joint >= rig.nodes.size()) return "a skin's joint is out of range";
+    for (const glm::dmat4& m : skin.inverseBind)
+      for (int c = 0; c < 4; ++c)
+        if (!finite(m[c])) return "an inverse bind matrix is not finite";
+  }
+  for (const SkinnedObject& object : rig.skinned)
+    if (object.object >= objectCount || object.skin >= rig.skins.size() || object.node >= rig.nodes.size())
+      return "a skinned object is out of range";
+  for (const MorphedObject& object : rig.morphed) {
+    if (object.object >= objectCount || object.node >= rig.nodes.size()) return "a morphed object is out of range";
+    if (!std::all_of(object.restWeights.begin(), object.restWeights.end(), [](float w) { return std::isfinite(w); }))
+      return "a morphed object's rest weights are not finite";
+  }
   if (rig.camera && (rig.camera->node >= rig.nodes.size() || !(rig.camera->fovYDegrees > 0.0f) ||
                      !(rig.camera->fovYDegrees < 180.0f)))
     return "the rig's camera needs a node in range and a field of view in (0°, 180°)";

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "scene/Deformation.h"
+
 namespace specula::scene {
 
 namespace {
@@ -187,7 +189,27 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
         if (auto problem = math::cameraProblem(key.camera)) return where + *problem;
     }
   }
-  return rigProblem(scene.rig, scene.objects.size());
+  if (auto problem = rigProblem(scene.rig, scene.objects.size())) return problem;
+  std::vector<std::size_t> jointCount(scene.meshes.size(), 0);
+  for (const SkinnedObject& skinned : scene.rig.skinned) {
+    const SceneObject& object = scene.objects[skinned.object];
+    jointCount[object.mesh] = scene.rig.skins[skinned.skin].joints.size();
+  }
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+    if (auto problem = deformationProblem(scene.meshes[m], jointCount[m])) return problem;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const std::optional<MirrorInfo>& mirror = scene.objects[o].mirror;
+    // Those describe the rest shape only.
+    if (mirror && (mirror->analytic || mirror->extrusion || mirror->closedTwinMesh) && deforms(scene, o))
+      return "mirror '" + scene.objects[o].name +
+             "' changes shape: it cannot declare an analytic shape, an extrusion or a closed twin";
+  }
+  for (const MorphedObject& morphed : scene.rig.morphed) {
+    const SceneObject& object = scene.objects[morphed.object];
+    if (morphed.restWeights.size() != scene.meshes[object.mesh].morphTargets.size())
+      return "object '" + object.name + "' needs one rest weight per morph target of its mesh";
+  }
+  return std::nullopt;
 }
 
 }  // namespace specula::scene

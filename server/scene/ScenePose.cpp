@@ -87,8 +87,16 @@ ScenePose ScenePose::at(const Scene& scene, double seconds) {
   }
   pose.objectToWorld.reserve(transforms.size());
   for (const math::Transform& tr : transforms) pose.objectToWorld.push_back(tr.matrix());
+  pose.morphWeights.resize(scene.objects.size());
+  pose.jointMatrices.resize(scene.objects.size());
   if (scene.rig.nodes.empty()) return pose;
+  std::vector<std::vector<float>> weights = scene.rig.weightsAt(seconds);
+  for (std::size_t m = 0; m < weights.size(); ++m)
+    pose.morphWeights[scene.rig.morphed[m].object] = std::move(weights[m]);
   const std::vector<glm::dmat4> nodeToWorld = scene.rig.worldAt(seconds);
+  std::vector<std::vector<glm::mat4>> joints = scene.rig.jointMatrices(nodeToWorld);
+  for (std::size_t s = 0; s < joints.size(); ++s)
+    pose.jointMatrices[scene.rig.skinned[s].object] = std::move(joints[s]);
   for (const RiggedObject& rigged : scene.rig.objects)
     pose.objectToWorld[rigged.object] =
         glm::mat4(glm::dmat4(pose.objectToWorld[rigged.object]) * nodeToWorld[rigged.node]);

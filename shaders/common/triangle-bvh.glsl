@@ -2,20 +2,7 @@
 // GLSL twin of math::TriangleBvh::intersect (same layout, same Möller–Trumbore test, same nearest
 // hit; this one opens the nearer child first, which only changes how soon it is found).
 
-struct BvhNode {
-  vec3 low;
-  uint first;  // inner node: first of its two children; leaf: its first triangle
-  vec3 high;
-  uint count;  // triangles of a leaf; 0 for an inner node
-};
-struct BvhTriangle {
-  vec3 a;
-  uint index;  // the triangle in the mesh
-  vec3 b;
-  float unused0;
-  vec3 c;
-  float unused1;
-};
+#include "common/triangle-bvh-records.glsl"
 
 layout(std430, binding = 4) readonly buffer BvhNodes {
   BvhNode bvhNodes[];

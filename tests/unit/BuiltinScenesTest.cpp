@@ -6,6 +6,9 @@
 #include <set>
 #include <string>
 
+#include <glm/gtc/constants.hpp>
+
+#include "scene/Deformation.h"
 #include "scene/MeshTopology.h"
 #include "math/Color.h"
 #include "scene/SceneChecks.h"
@@ -35,8 +38,9 @@ glm::vec3 worldPosition(const SceneObject& object, const Vertex& v) {
 }
 
 bool samePose(const ScenePose& a, const ScenePose& b) {
-  return a.objectToWorld == b.objectToWorld && a.camera.eye == b.camera.eye && a.camera.target == b.camera.target &&
-         a.camera.up == b.camera.up && a.camera.fovYDegrees == b.camera.fovYDegrees;
+  return a.objectToWorld == b.objectToWorld && a.morphWeights == b.morphWeights && a.camera.eye == b.camera.eye &&
+         a.camera.target == b.camera.target && a.camera.up == b.camera.up &&
+         a.camera.fovYDegrees == b.camera.fovYDegrees;
 }
 
 }  // namespace
@@ -75,7 +79,7 @@ TEST(BuiltinScenes, EverySceneHasAMirrorAndAnAnimationThatMovesSomething) {
   for (const std::string_view name : builtinSceneNames()) {
     const Scene scene = build(name);
     EXPECT_GE(scene.mirrorCount(), 1u) << name;
-    EXPECT_FALSE(scene.animations.empty()) << name;
+    EXPECT_TRUE(scene.moves()) << name;
     EXPECT_FALSE(samePose(ScenePose::at(scene, 0.0), ScenePose::at(scene, 3.0))) << name;
   }
 }
@@ -352,4 +356,28 @@ TEST(TeapotTableScene, FineTeapotAndCoarseClothAndCandlestickShareTheMirrorBall)
   EXPECT_LE(scene.meshes[objectNamed(scene, "tablecloth").mesh].triangleCount(), 12u);
   EXPECT_LE(scene.meshes[objectNamed(scene, "candlestick").mesh].vertices.size(), 200u);
   EXPECT_TRUE(objectNamed(scene, "mirror-ball").mirror.has_value());
+}
+
+TEST(BuiltinScenes, TheFlagRipplesAlongItsClothAsATravellingWave) {
+  const Scene scene = build("flag");
+  const SceneObject& flag = objectNamed(scene, "flag");
+  const auto index = static_cast<std::size_t>(&flag - scene.objects.data());
+  const Mesh& cloth = scene.meshes[flag.mesh];
+  // At every key (48 a 1.6 s period) the cloth is A(x)·sin(kx − ωt): its amplitude grows from the pole at
+  // x = 0 to 0.3 m at the free edge 3 m out, 1.25 ripples across.
+  const float k = 2.0f * glm::pi<float>() * 1.25f / 3.0f;
+  for (int key : {0, 5, 12, 30}) {
+    const double t = 1.6 * key / 48.0;
+    const float omegaT = 2.0f * glm::pi<float>() * static_cast<float>(key) / 48.0f;
+    const ScenePose pose = ScenePose::at(scene, t);
+    const std::vector<Vertex> posed = deformedVertices(cloth, pose.morphWeights[index], {});
+    for (std::size_t v = 0; v < posed.size(); v += 37) {
+      const float x = posed[v].position.x;
+      EXPECT_NEAR(posed[v].position.z, 0.3f * x / 3.0f * std::sin(k * x - omegaT), 1e-5f) << key << " " << v;
+      // The normal is the surface's: (−∂z/∂x, 0, 1), normalised.
+      const float slope = 0.3f / 3.0f * std::sin(k * x - omegaT) + 0.3f * x / 3.0f * k * std::cos(k * x - omegaT);
+      const glm::vec3 normal = glm::normalize(glm::vec3(-slope, 0.0f, 1.0f));
+      EXPECT_NEAR(glm::dot(posed[v].normal, normal), 1.0f, 1e-5f) << key << " " << v;
+    }
+  }
 }

@@ -14,5 +14,6 @@ Scene quadScene();
 Scene teapotTableScene();
 Scene beadsScene();
 Scene utahTeapotScene();
+Scene flagScene();
 
 }  // namespace specula::scene::builtin

@@ -39,6 +39,10 @@ constexpr std::array kEntries{
     Entry{"utah-teapot",
           "chrome Utah teapot (32 Bezier patches, a parametric mirror) among coloured objects on a checker floor",
           builtin::utahTeapotScene},
+    Entry{
+        "flag",
+        "a flag rippling on a pole beside a chrome ball, reshaped every frame by two morph targets: deforming geometry",
+        builtin::flagScene},
 };
 
 constexpr auto kNames = [] {

@@ -24,6 +24,7 @@ std::string typeName(int type) {
     case TINYGLTF_TYPE_VEC2: return "VEC2";
     case TINYGLTF_TYPE_VEC3: return "VEC3";
     case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
     default: return "type " + std::to_string(type);
   }
 }
@@ -45,12 +46,14 @@ std::size_t componentCount(int type) {
     case TINYGLTF_TYPE_SCALAR: return 1;
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_MAT4: return 16;
     default: return 4;
   }
 }
 
 Result<Accessor> checkedAccessor(const tinygltf::Model& model, int index, const std::string& role, int type,
-                                 std::initializer_list<int> componentTypes, std::size_t maxCount) {
+                                 std::initializer_list<int> componentTypes, std::size_t maxCount,
+                                 IntegerComponents integers) {
   if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size())
     return Error{role + " refers to accessor " + std::to_string(index) + ", but the file has " +
                  std::to_string(model.accessors.size())};
@@ -67,7 +70,8 @@ Result<Accessor> checkedAccessor(const tinygltf::Model& model, int index, const 
     return Error{where + "component type " + componentTypeName(accessor.componentType) +
                  " is not allowed here (allowed: " + allowed + ")"};
   }
-  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && type != TINYGLTF_TYPE_SCALAR && !accessor.normalized)
+  if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && type != TINYGLTF_TYPE_SCALAR &&
+      integers == IntegerComponents::Normalized && !accessor.normalized)
     return Error{where + "integer attributes must be normalized (KHR_mesh_quantization is not supported)"};
   if (accessor.count == 0) return Error{where + "is empty"};
   if (accessor.count > maxCount)

@@ -40,6 +40,12 @@ struct Accessor {
     }
   }
 
+  // Component c of element i as an unnormalized integer (joint indices).
+  std::uint32_t integer(std::size_t i, std::size_t c) const {
+    const unsigned char* at = first + i * stride + c * componentSize(componentType);
+    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? at[0] : load<std::uint16_t>(at);
+  }
+
   std::uint32_t index(std::size_t i) const {
     const unsigned char* at = first + i * stride;
     switch (componentType) {
@@ -57,10 +63,14 @@ struct Accessor {
   }
 };
 
+// Whether integer components of a vector must be normalized (attributes) or are plain integers (joints).
+enum class IntegerComponents { Normalized, Indices };
+
 // Accessor `index`, read as `role` (named in messages), once it has elements of `type` in one of
-// `componentTypes`, at most `maxCount` of them, all inside its buffer; sparse accessors and
-// unnormalized integer attributes are refused.
+// `componentTypes`, at most `maxCount` of them, all inside its buffer; sparse accessors and, unless
+// they are `Indices`, unnormalized integer vectors are refused.
 Result<Accessor> checkedAccessor(const tinygltf::Model& model, int index, const std::string& role, int type,
-                                 std::initializer_list<int> componentTypes, std::size_t maxCount);
+                                 std::initializer_list<int> componentTypes, std::size_t maxCount,
+                                 IntegerComponents integers = IntegerComponents::Normalized);
 
 }  // namespace specula::scene::gltf

@@ -55,41 +55,87 @@ Result<std::vector<double>> readTimes(const tinygltf::Model& model, int input, c
   return times;
 }
 
-Result<std::vector<glm::dvec4>> readValues(const tinygltf::Model& model, int output, const NodeChannel& channel,
-                                           const std::string& where) {
-  const bool rotation = channel.property == NodeProperty::Rotation;
+// Morph targets the mesh of `node` has (every primitive of a mesh has as many), 0 without a mesh.
+std::size_t morphTargetCount(const tinygltf::Model& model, std::size_t node) {
+  const int mesh = model.nodes[node].mesh;
+  if (mesh < 0 || static_cast<std::size_t>(mesh) >= model.meshes.size()) return 0;
+  const auto& primitives = model.meshes[static_cast<std::size_t>(mesh)].primitives;
+  return primitives.empty() ? 0 : primitives.front().targets.size();
+}
+
+// A channel's values, `width` numbers a value: a vector of 3 or 4, or a key's `width` morph target weights.
+// `accessorName` gets the accessor's name for messages.
+Result<std::vector<double>> readNumbers(const tinygltf::Model& model, int output, const NodeChannel& channel,
+                                        std::size_t width, const std::string& where, std::string& accessorName) {
   const std::size_t perKey = channel.interpolation == KeyInterpolation::CubicSpline ? 3 : 1;
   const std::initializer_list<int> floatOnly = {TINYGLTF_COMPONENT_TYPE_FLOAT};
-  const std::initializer_list<int> quaternions = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
-                                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
-                                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
-  Result<Accessor> accessor = checkedAccessor(model, output, where, rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3,
-                                              rotation ? quaternions : floatOnly, 3 * kMaxKeysPerSampler);
+  const std::initializer_list<int> normalized = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+                                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+  const bool rotation = channel.property == NodeProperty::Rotation;
+  const bool weights = channel.property == NodeProperty::Weights;
+  const int type = weights ? TINYGLTF_TYPE_SCALAR : rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3;
+  const std::size_t elementsPerValue = weights ? width : 1;
+  Result<Accessor> accessor = checkedAccessor(model, output, where, type, rotation || weights ? normalized : floatOnly,
+                                              3 * kMaxKeysPerSampler * elementsPerValue);
   if (!accessor) return Error{accessor.error()};
-  if (accessor->count != perKey * channel.times.size())
+  accessorName = accessor->name;
+  if (accessor->count != perKey * channel.times.size() * elementsPerValue)
     return Error{
         accessor->name + ": " + std::to_string(accessor->count) + " values for " +
         std::to_string(channel.times.size()) + " keys" +
+        (weights ? " of " + std::to_string(width) + " morph target weights" : "") +
         (perKey == 3 ? "; CUBICSPLINE needs 3 a key (in-tangent, value, out-tangent)" : "; it needs one a key")};
-  std::vector<glm::dvec4> values(accessor->count);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    for (int c = 0; c < (rotation ? 4 : 3); ++c) values[i][c] = accessor->component(i, static_cast<std::size_t>(c));
-    const double largest =
-        std::max({std::abs(values[i].x), std::abs(values[i].y), std::abs(values[i].z), std::abs(values[i].w)});
-    if (!(largest <= kMaxKeyMagnitude))  // also false for NaN
-      return Error{accessor->name + ": value " + std::to_string(i) + " is not finite or has a component beyond ±" +
+  std::vector<double> numbers(perKey * channel.times.size() * width);
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    numbers[i] = weights ? accessor->component(i, 0) : accessor->component(i / width, i % width);
+    if (!(std::abs(numbers[i]) <= kMaxKeyMagnitude))  // also false for NaN
+      return Error{accessor->name + ": value " + std::to_string(weights ? i : i / width) +
+                   " is not finite or has a component beyond ±" +
                    std::to_string(static_cast<long long>(kMaxKeyMagnitude))};
+  }
+  return numbers;
+}
+
+Result<std::vector<glm::dvec4>> readValues(const tinygltf::Model& model, int output, const NodeChannel& channel,
+                                           const std::string& where) {
+  const bool rotation = channel.property == NodeProperty::Rotation;
+  const std::size_t width = rotation ? 4 : 3;
+  std::string name;
+  Result<std::vector<double>> numbers = readNumbers(model, output, channel, width, where, name);
+  if (!numbers) return Error{numbers.error()};
+  const std::size_t perKey = channel.interpolation == KeyInterpolation::CubicSpline ? 3 : 1;
+  std::vector<glm::dvec4> values(numbers->size() / width);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (std::size_t c = 0; c < width; ++c) values[i][static_cast<glm::length_t>(c)] = (*numbers)[i * width + c];
     const bool keyValue = perKey == 1 || i % 3 == 1;  // a cubic spline's tangents may be zero
     if (rotation && keyValue && glm::length(values[i]) < 1e-6)
-      return Error{accessor->name + ": value " + std::to_string(i) + " is a zero quaternion, which is no rotation"};
+      return Error{name + ": value " + std::to_string(i) + " is a zero quaternion, which is no rotation"};
   }
   return values;
+}
+
+// A weights channel of `width` targets as channels of four weights each (the last one padded with zeros).
+std::vector<NodeChannel> weightChannels(const NodeChannel& shape, const std::vector<double>& numbers,
+                                        std::size_t width) {
+  std::vector<NodeChannel> channels;
+  for (std::size_t first = 0; first < width; first += 4) {
+    NodeChannel channel = shape;
+    channel.firstWeight = static_cast<std::uint32_t>(first);
+    channel.values.resize(numbers.size() / width);
+    for (std::size_t v = 0; v < channel.values.size(); ++v)
+      for (std::size_t c = 0; c < 4 && first + c < width; ++c)
+        channel.values[v][static_cast<glm::length_t>(c)] = numbers[v * width + first + c];
+    channels.push_back(std::move(channel));
+  }
+  return channels;
 }
 
 Result<NodeProperty> propertyOf(const std::string& path, const std::string& where) {
   if (path == "translation") return NodeProperty::Translation;
   if (path == "rotation") return NodeProperty::Rotation;
   if (path == "scale") return NodeProperty::Scale;
+  if (path == "weights") return NodeProperty::Weights;
   return Error{where + ".target.path: " + quoted(path) + " is not translation, rotation, scale or weights"};
 }
 
@@ -104,7 +150,6 @@ Result<std::vector<NodeClip>> readClips(const tinygltf::Model& model, const std:
     notes.push_back(std::to_string(left) + (left == 1 ? " animation" : " animations") + " not played (--animation " +
                     choice + "; all plays every one)");
   std::vector<NodeClip> clips;
-  std::size_t weightChannels = 0;
   for (std::size_t a : chosen.value()) {
     const tinygltf::Animation& animation = model.animations[a];
     NodeClip clip;
@@ -118,14 +163,15 @@ Result<std::vector<NodeClip>> readClips(const tinygltf::Model& model, const std:
       if (source.target_node < 0 || static_cast<std::size_t>(source.target_node) >= model.nodes.size())
         return Error{where + ".target.node: refers to node " + std::to_string(source.target_node) +
                      ", but the file has " + std::to_string(model.nodes.size())};
-      if (source.target_path == "weights") {
-        ++weightChannels;
-        continue;
-      }
       Result<NodeProperty> property = propertyOf(source.target_path, where);
       if (!property) return Error{property.error()};
       const auto node = static_cast<std::size_t>(source.target_node);
-      if (!model.nodes[node].matrix.empty())
+      const bool weights = property.value() == NodeProperty::Weights;
+      const std::size_t targets = morphTargetCount(model, node);
+      if (weights && targets == 0)
+        return Error{where + ".target.node: node " + std::to_string(node) +
+                     " has no mesh with morph targets for its weights to drive"};
+      if (!weights && !model.nodes[node].matrix.empty())
         return Error{where + ".target.node: node " + std::to_string(node) +
                      " has a matrix; glTF animates only nodes given by translation, rotation and scale"};
       const std::string samplerAt =
@@ -139,20 +185,28 @@ Result<std::vector<NodeClip>> readClips(const tinygltf::Model& model, const std:
       Result<std::vector<double>> times = readTimes(model, sampler.input, samplerAt + ".input");
       if (!times) return Error{times.error()};
       channel.times = std::move(times).value();
-      Result<std::vector<glm::dvec4>> values = readValues(model, sampler.output, channel, samplerAt + ".output");
-      if (!values) return Error{values.error()};
-      channel.values = std::move(values).value();
+      std::vector<NodeChannel> read;
+      if (weights) {
+        std::string name;
+        Result<std::vector<double>> numbers =
+            readNumbers(model, sampler.output, channel, targets, samplerAt + ".output", name);
+        if (!numbers) return Error{numbers.error()};
+        read = weightChannels(channel, numbers.value(), targets);
+      } else {
+        Result<std::vector<glm::dvec4>> values = readValues(model, sampler.output, channel, samplerAt + ".output");
+        if (!values) return Error{values.error()};
+        channel.values = std::move(values).value();
+        read.push_back(std::move(channel));
+      }
       if (!rigNode[node]) continue;  // a node of another scene: nothing here moves
-      channel.node = *rigNode[node];
-      clip.duration = std::max(clip.duration, channel.times.back());
-      clip.channels.push_back(std::move(channel));
+      for (NodeChannel& each : read) {
+        each.node = *rigNode[node];
+        clip.duration = std::max(clip.duration, each.times.back());
+        clip.channels.push_back(std::move(each));
+      }
     }
     if (!clip.channels.empty()) clips.push_back(std::move(clip));
   }
-  if (weightChannels > 0)
-    notes.push_back(std::to_string(weightChannels) +
-                    (weightChannels == 1 ? " animation channel drives" : " animation channels drive") +
-                    " morph target weights, not played (morph targets are not read yet)");
   return clips;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// A glTF file's animations as node clips: the ones chosen, their channels on translation, rotation and
-// scale with LINEAR, STEP and CUBICSPLINE samplers, checked and named by JSONPath where broken.
+// A glTF file's animations as node clips: the ones chosen, their channels on translation, rotation, scale
+// and morph target weights with LINEAR, STEP and CUBICSPLINE samplers, checked and named by JSONPath
+// where broken.
 #include <tiny_gltf.h>
 
 #include <cstdint>
@@ -20,7 +21,7 @@ inline constexpr double kMaxKeyMagnitude = 1e9;
 
 // The animations `choice` names ("all", "none", a name or an index), each a clip whose channels name
 // nodes by `rigNode` (file node → rig node, nullopt for nodes outside the chosen scene, whose channels
-// are dropped). Channels on morph target weights are left out and counted in `notes`.
+// are dropped). A channel on weights becomes one channel for every four of the node's morph targets.
 Result<std::vector<NodeClip>> readClips(const tinygltf::Model& model, const std::string& choice,
                                         const std::vector<std::optional<std::uint32_t>>& rigNode,
                                         std::vector<std::string>& notes);

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "base/Result.h"
 #include "scene/GltfImporter.h"
@@ -15,6 +16,14 @@
 #include "scene/gltf/GltfMaterials.h"
 
 namespace specula::scene::gltf {
+
+// How a node's mesh changes shape: its morph targets' weights may animate, and its skin's joints move it
+// when `skin` is set; whatever does not animate is applied once, at rest, when the mesh is placed.
+struct NodeDeformation {
+  bool weightsAnimate = false;
+  std::optional<std::uint32_t> skin;  // the rig skin that poses the mesh every frame
+  std::vector<glm::mat4> restJoints;  // the node's skin at rest (mesh space), empty without a skin
+};
 
 // Adds node meshes to the imported scene, each object under a name unique in the scene, with its
 // material (a chrome one makes it a mirror of mixed curvature, two-sided where its mesh is open); at most
@@ -25,7 +34,9 @@ class ObjectPlacer {
 
   // Node `index`'s mesh, if it has one, placed at `world` (its rest pose); a singular transform leaves it
   // out, with a note. Under a `rigNode` the mesh stays in the node's space and the rig places its objects.
-  Status placeNodeMesh(std::size_t index, const glm::dmat4& world, std::optional<std::uint32_t> rigNode);
+  // What of `deformation` animates needs a rigNode: the rig then deforms its objects, mirrors included.
+  Status placeNodeMesh(std::size_t index, const glm::dmat4& world, std::optional<std::uint32_t> rigNode,
+                       const NodeDeformation& deformation);
 
  private:
   std::string uniqueName(const std::string& wanted, const std::string& base);

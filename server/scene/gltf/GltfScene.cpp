@@ -1,5 +1,6 @@
 #include "scene/gltf/GltfScene.h"
 
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "scene/gltf/GltfMaterials.h"
 #include "scene/gltf/GltfNodes.h"
 #include "scene/gltf/GltfObjects.h"
+#include "scene/gltf/GltfSkins.h"
 
 namespace specula::scene::gltf {
 
@@ -32,18 +34,6 @@ Result<std::size_t> chosenScene(const tinygltf::Model& model, const GltfSceneCho
 
 // What the file holds that this build does not play or read, named once each so nothing is left out in silence.
 void noteWhatIsNotRead(const tinygltf::Model& model, std::vector<std::string>& notes) {
-  const auto count = [](std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-  };
-  if (!model.skins.empty())
-    notes.push_back(count(model.skins.size(), "skin", "skins") +
-                    " not applied (skinning is not read yet): skinned meshes are drawn in their bind pose");
-  std::size_t morphing = 0;
-  for (const tinygltf::Mesh& mesh : model.meshes)
-    for (const tinygltf::Primitive& primitive : mesh.primitives) morphing += primitive.targets.empty() ? 0 : 1;
-  if (morphing > 0)
-    notes.push_back(count(morphing, "primitive has", "primitives have") +
-                    " morph targets, not applied (morph targets are not read yet): drawn in their base shape");
   // The extensions the importer reads; KHR_texture_transform and KHR_mesh_quantization are named where used.
   static const std::set<std::string, std::less<>> kRead = {"KHR_lights_punctual", "KHR_materials_unlit",
                                                            "KHR_texture_transform", "KHR_mesh_quantization"};
@@ -83,14 +73,40 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
   Result<std::vector<NodeClip>> clips = readClips(model, choice.animation, rigNode, imported.scene.notes);
   if (!clips) return Error{clips.error()};
   rig.clips = std::move(clips).value();
-  std::vector<bool> moved(rig.nodes.size(), false);
+  std::vector<bool> moved(rig.nodes.size(), false), morphing(rig.nodes.size(), false);
   for (const NodeClip& clip : rig.clips)
-    for (const NodeChannel& channel : clip.channels) moved[channel.node] = true;
+    for (const NodeChannel& channel : clip.channels)
+      (channel.property == NodeProperty::Weights ? morphing : moved)[channel.node] = true;
   for (std::size_t i = 0; i < rig.nodes.size(); ++i)
     if (rig.nodes[i].parent && moved[*rig.nodes[i].parent]) moved[i] = true;
   NodeRig still;
   still.nodes = rig.nodes;
   const std::vector<glm::dmat4> restWorld = still.worldAt(0.0);  // scales clamped as animations draw them
+
+  // Each skin a drawn mesh uses, read once; it poses the mesh every frame when anything animates.
+  std::map<std::size_t, std::uint32_t> rigSkin;  // file skin → rig.skins
+  const auto deformationOf = [&](std::uint32_t i) -> Result<NodeDeformation> {
+    const tinygltf::Node& node = model.nodes[visited[i].index];
+    NodeDeformation deformation;
+    deformation.weightsAnimate = morphing[i];
+    if (node.skin < 0 || node.mesh < 0) return deformation;
+    if (static_cast<std::size_t>(node.skin) >= model.skins.size())
+      return Error{"$.nodes[" + std::to_string(visited[i].index) + "].skin: refers to skin " +
+                   std::to_string(node.skin) + ", but the file has " + std::to_string(model.skins.size())};
+    const auto skin = static_cast<std::size_t>(node.skin);
+    if (!rigSkin.contains(skin)) {
+      Result<RigSkin> read = readSkin(model, skin, rigNode);
+      if (!read) return Error{read.error()};
+      rigSkin[skin] = static_cast<std::uint32_t>(rig.skins.size());
+      rig.skins.push_back(std::move(read).value());
+    }
+    const RigSkin& joints = rig.skins[rigSkin[skin]];
+    const glm::dmat4 toMesh = glm::inverse(restWorld[i]);
+    for (std::size_t j = 0; j < joints.joints.size(); ++j)
+      deformation.restJoints.emplace_back(toMesh * restWorld[joints.joints[j]] * joints.inverseBind[j]);
+    if (rig.moves()) deformation.skin = rigSkin[skin];
+    return deformation;
+  };
 
   MaterialTable materials(model, images, choice.mirrors, imported.scene, imported.scene.notes);
   ObjectPlacer objects(model, materials, imported);
@@ -105,7 +121,12 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
         imported.scene.notes.push_back("light " + std::to_string(*light) +
                                        " is on an animated node: it stays where the rest pose puts it");
     }
-    if (Status placed = objects.placeNodeMesh(visited[i].index, mover ? restWorld[i] : visited[i].world, mover);
+    Result<NodeDeformation> deformation = deformationOf(i);
+    if (!deformation) return Error{deformation.error()};
+    const bool deforms = deformation->weightsAnimate || deformation->skin;
+    const std::optional<std::uint32_t> holder = mover || deforms ? std::optional(i) : std::nullopt;
+    if (Status placed =
+            objects.placeNodeMesh(visited[i].index, holder ? restWorld[i] : visited[i].world, holder, *deformation);
         !placed)
       return Error{placed.error()};
   }

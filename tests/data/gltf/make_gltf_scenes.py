@@ -16,6 +16,18 @@
   open-chrome.glb: open chrome meshes, two-sided mirrors: a bowl (a sphere's lower half, no lid) and a
       half-pipe panel (half a cylinder's side, no caps) on a floor between a red box in front and a green
       box behind, a camera looking down at them from the front.
+  morphing.glb: a chrome sphere between two objects whose morph targets animate (animation "wave",
+      2 s): a cloth left of it, facing it (a 24 x 16 grid, weights [0.2, 0] on its node) waving with one target
+      and bulging with the other, by LINEAR weight keys, and a red box whose top rises by one
+      CUBICSPLINE weight (zero tangents: a smoothstep) from 0 at 0 s to 1 at 2 s.
+  skinned.glb: a chrome sphere beside an arm (a tube 2 m tall, 12 sides, 16 rings) skinned to two
+      joints: "shoulder" at its base (1.3, 0, 1.4), front right of the sphere, turning about y by 0-90 degrees (LINEAR, 2 s), and its child
+      "elbow" 1 m up, bending about z by 0-60-0 degrees (LINEAR); vertices below 0.75 m follow the
+      shoulder, above 1.25 m the elbow, blended linearly between (JOINTS_0 as bytes, WEIGHTS_0 floats).
+      The arm's own node has a translation glTF says a skinned mesh ignores.
+  deforming-mirrors.glb: mirrors that change shape, in the animation "squash and bend" (2 s): a chrome
+      sphere squashed by one morph target (LINEAR weight 0-1-0) and a chrome arm, skinned as skinned.glb's,
+      swinging and bending; a red, a green and a blue box round them to reflect.
   engine.glb: a two-cylinder engine of 29 meshes on 82 nodes up to five deep (TRS and matrices,
       meshes instanced on several nodes), painted, cast, aluminium, rubber, copper and chrome parts
       (the chrome valve covers, exhaust headers, flywheel and oil cap become mirrors), two
@@ -48,7 +60,8 @@ class Builder:
         self.doc["accessors"].append(acc)
         return len(self.doc["accessors"]) - 1
 
-    def mesh(self, name, positions, normals, indices, material, uvs=None):
+    def mesh(self, name, positions, normals, indices, material, uvs=None, targets=(), weights=None):
+        """A one-primitive mesh; `targets` are morph targets, each (position deltas, normal deltas)."""
         flat = [c for p in positions for c in p]
         lo = [min(p[i] for p in positions) for i in range(3)]
         hi = [max(p[i] for p in positions) for i in range(3)]
@@ -58,8 +71,17 @@ class Builder:
         attributes = {"POSITION": pos, "NORMAL": nor}
         if uvs:
             attributes["TEXCOORD_0"] = self.accessor(pack([c for uv in uvs for c in uv]), "VEC2", len(uvs), 5126)
-        self.doc["meshes"].append({"name": name, "primitives": [
-            {"attributes": attributes, "indices": ind, "material": material}]})
+        primitive = {"attributes": attributes, "indices": ind, "material": material}
+        if targets:
+            primitive["targets"] = [
+                {"POSITION": self.accessor(pack([c for d in dp for c in d]), "VEC3", len(dp), 5126,
+                                           ([min(d[i] for d in dp) for i in range(3)],
+                                            [max(d[i] for d in dp) for i in range(3)])),
+                 "NORMAL": self.accessor(pack([c for d in dn for c in d]), "VEC3", len(dn), 5126)}
+                for dp, dn in targets]
+        self.doc["meshes"].append({"name": name, "primitives": [primitive]})
+        if weights is not None:
+            self.doc["meshes"][-1]["weights"] = weights
         return len(self.doc["meshes"]) - 1
 
     def material(self, name, rgb, metallic, roughness, texture=None):
@@ -88,8 +110,8 @@ class Builder:
         """An animation of `channels`, each (node, path, interpolation, times, values as flat floats)."""
         samplers, targets = [], []
         for node, path, interpolation, times, values in channels:
-            kind = "VEC4" if path == "rotation" else "VEC3"
-            width = 4 if kind == "VEC4" else 3
+            kind = {"rotation": "VEC4", "weights": "SCALAR"}.get(path, "VEC3")
+            width = {"VEC4": 4, "SCALAR": 1}.get(kind, 3)
             times_at = self.accessor(pack(times), "SCALAR", len(times), 5126, ([min(times)], [max(times)]))
             values_at = self.accessor(pack(values), kind, len(values) // width, 5126)
             samplers.append({"input": times_at, "output": values_at, "interpolation": interpolation})
@@ -413,6 +435,147 @@ def animated():
     g.write_glb("animated.glb")
 
 
+def cloth(width, height, columns, rows):
+    """A grid in the xy plane facing +z, and two morph targets: a wave along x (one period across) and a
+    bulge towards +z, largest at mid height; their normal deltas tilt the rest normal (0, 0, 1) as the
+    displaced surface's normals tilt."""
+    positions, normals, wave, bulge, indices = [], [], [], [], []
+    for r in range(rows + 1):
+        for c in range(columns + 1):
+            x, y = width * (c / columns - 0.5), height * (r / rows - 0.5)
+            positions.append([x, y, 0.0])
+            normals.append([0.0, 0.0, 1.0])
+            k = 2 * math.pi / width
+            wave.append(([0.0, 0.0, 0.35 * math.sin(k * x)], [-0.35 * k * math.cos(k * x), 0.0, 0.0]))
+            h = height / 2
+            bulge.append(([0.0, 0.0, 0.6 * (1 - (y / h) ** 2)], [0.0, 1.2 * y / (h * h), 0.0]))
+    for r in range(rows):
+        for c in range(columns):
+            a = r * (columns + 1) + c
+            b, d = a + 1, a + columns + 1
+            indices += [a, b, d + 1, a, d + 1, d]
+    split = lambda pairs: ([p for p, _ in pairs], [n for _, n in pairs])
+    return positions, normals, indices, [split(wave), split(bulge)]
+
+
+def morphing():
+    g = Builder()
+    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
+    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
+    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
+    yellow = g.material("cloth", (0.9, 0.75, 0.1), 0.0, 0.7)
+    positions, normals, indices, targets = cloth(4.0, 2.4, 24, 16)
+    sheet = g.mesh("cloth", positions, normals, indices, yellow, targets=targets)
+    cube_positions, cube_normals, cube_indices = box((0.4, 0.4, 0.4))
+    rise = [[0.0, 0.6 if p[1] > 0 else 0.0, 0.0] for p in cube_positions]
+    cube = g.mesh("red box", cube_positions, cube_normals, cube_indices, red,
+                  targets=[(rise, [[0.0, 0.0, 0.0]] * len(rise))], weights=[0.0])
+    mirror = g.node(name="mirror", mesh=g.mesh("ball", *sphere(1.0, 24, 48), chrome), translation=[0, 1.2, 0])
+    # The cloth stands left of the sphere facing it (+z turned to +x), the box front right: both reflected.
+    flag = g.node(name="cloth", mesh=sheet, translation=[-2.2, 1.4, 0.6], weights=[0.2, 0.0],
+                  rotation=[0, math.sin(math.pi / 4), 0, math.cos(math.pi / 4)])
+    red_box = g.node(name="red box", mesh=cube, translation=[1.3, 0.4, 1.5])
+    ground = g.node(name="floor", mesh=g.mesh("floor", *quad(5.0), grey))
+    camera = camera_looking_down(g, 0.8, [0.8, 2.6, 6.5], 12.0)
+    g.animation("wave", [
+        (flag, "weights", "LINEAR", [0, 1, 2], [0, 0, 1, 0.5, 0, 1]),
+        (red_box, "weights", "CUBICSPLINE", [0, 2], [0, 0, 0, 0, 1, 0]),
+    ])
+    g.doc["scenes"] = [{"nodes": [ground, mirror, flag, red_box, camera]}]
+    g.write_glb("morphing.glb")
+
+
+def arm(g, material, base):
+    """A tube 2 m tall (12 sides, 16 rings, radius 0.2) from `base` up, skinned to joints "shoulder" at its
+    base and "elbow" 1 m up (its child): vertices below 0.75 m follow the shoulder, above 1.25 m the elbow,
+    blended linearly between (JOINTS_0 as bytes, WEIGHTS_0 floats). Returns its mesh, the two joint
+    nodes and the skin."""
+    sides, rings, radius = 12, 16, 0.2
+    positions, normals, joints, weights, indices = [], [], [], [], []
+    for r in range(rings + 1):
+        y = 2.0 * r / rings
+        elbow = min(max((y - 0.75) / 0.5, 0.0), 1.0)
+        for k in range(sides):
+            a = 2 * math.pi * k / sides
+            n = [math.cos(a), 0.0, -math.sin(a)]
+            positions.append([base[0] + radius * n[0], y, base[2] + radius * n[2]])
+            normals.append(n)
+            joints += [0, 1, 0, 0]
+            weights += [1.0 - elbow, elbow, 0.0, 0.0]
+    for r in range(rings):
+        for k in range(sides):
+            a, b = r * sides + k, r * sides + (k + 1) % sides
+            indices += [a, b, b + sides, a, b + sides, a + sides]
+    mesh = g.mesh("arm", positions, normals, indices, material)
+    attributes = g.doc["meshes"][mesh]["primitives"][0]["attributes"]
+    attributes["JOINTS_0"] = g.accessor(bytes(joints), "VEC4", len(positions), 5121)
+    attributes["WEIGHTS_0"] = g.accessor(pack(weights), "VEC4", len(positions), 5126)
+    inverse_binds = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -base[0], 0, -base[2], 1,
+                     1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -base[0], -1, -base[2], 1]
+    elbow = g.node(name="elbow", translation=[0, 1, 0])
+    shoulder = g.node(name="shoulder", translation=base, children=[elbow])
+    g.doc.setdefault("skins", []).append({"joints": [shoulder, elbow],
+                                          "inverseBindMatrices": g.accessor(pack(inverse_binds), "MAT4", 2, 5126)})
+    return mesh, shoulder, elbow, len(g.doc["skins"]) - 1
+
+
+def about(axis, degrees):
+    return [c * math.sin(math.radians(degrees) / 2) for c in axis] + [math.cos(math.radians(degrees) / 2)]
+
+
+def bend(shoulder, elbow):
+    """The arm's animation: the shoulder turns 90 degrees about y over 2 s, the elbow bends 0-60-0 about z."""
+    return [(shoulder, "rotation", "LINEAR", [0, 2], about([0, 1, 0], 0) + about([0, 1, 0], 90)),
+            (elbow, "rotation", "LINEAR", [0, 1, 2], about([0, 0, 1], 0) + about([0, 0, 1], 60) + about([0, 0, 1], 0))]
+
+
+def skinned():
+    g = Builder()
+    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
+    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
+    green = g.material("arm", (0.1, 0.7, 0.3), 0.0, 0.6)
+    mesh, shoulder, elbow, skin = arm(g, green, [1.3, 0.0, 1.4])  # front right of the sphere: reflected in it
+    arm_node = g.node(name="arm", mesh=mesh, skin=skin, translation=[5, 0, 0])
+    mirror = g.node(name="mirror", mesh=g.mesh("ball", *sphere(1.0, 24, 48), chrome), translation=[0, 1.2, 0])
+    ground = g.node(name="floor", mesh=g.mesh("floor", *quad(5.0), grey))
+    camera = camera_looking_down(g, 0.8, [0.8, 2.6, 6.5], 12.0)
+    g.animation("bend", bend(shoulder, elbow))
+    g.doc["scenes"] = [{"nodes": [ground, mirror, shoulder, arm_node, camera]}]
+    g.write_glb("skinned.glb")
+
+
+def deforming_mirrors():
+    g = Builder()
+    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
+    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
+    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
+    green = g.material("green", (0.1, 0.7, 0.2), 0.0, 0.6)
+    blue = g.material("blue", (0.1, 0.2, 0.8), 0.0, 0.6)
+    positions, normals, indices = sphere(1.0, 24, 48)
+    # Squashed: 1.3 times wider, 0.65 times as tall; the normal delta is the squashed ellipsoid's normal's.
+    squash = [[0.3 * p[0], -0.35 * p[1], 0.3 * p[2]] for p in positions]
+    def squashed_normal(n):
+        m = [n[0] / 1.3, n[1] / 0.65, n[2] / 1.3]
+        length = math.sqrt(sum(c * c for c in m))
+        return [m[i] / length - n[i] for i in range(3)]
+    ball = g.mesh("ball", positions, normals, indices, chrome,
+                  targets=[(squash, [squashed_normal(n) for n in normals])])
+    mesh, shoulder, elbow, skin = arm(g, chrome, [1.4, 0.0, 0.4])
+    nodes = [
+        g.node(name="floor", mesh=g.mesh("floor", *quad(5.0), grey)),
+        g.node(name="mirror", mesh=ball, translation=[-0.9, 1.1, 0]),
+        shoulder,
+        g.node(name="chrome arm", mesh=mesh, skin=skin),
+        g.node(name="red box", mesh=g.mesh("red box", *box((0.4, 0.4, 0.4)), red), translation=[0.2, 0.4, 2.0]),
+        g.node(name="green box", mesh=g.mesh("green box", *box((0.5, 0.5, 0.5)), green), translation=[2.6, 0.5, -1.2]),
+        g.node(name="blue box", mesh=g.mesh("blue box", *box((0.5, 0.5, 0.5)), blue), translation=[-2.8, 0.5, 0.8]),
+    ]
+    nodes.append(camera_looking_down(g, 0.8, [0.4, 2.6, 6.5], 12.0))
+    g.animation("squash and bend", [(nodes[1], "weights", "LINEAR", [0, 1, 2], [0, 1, 0])] + bend(shoulder, elbow))
+    g.doc["scenes"] = [{"nodes": nodes}]
+    g.write_glb("deforming-mirrors.glb")
+
+
 def engine():
     g = Builder()
     paint = g.material("engine blue", (0.12, 0.22, 0.42), 0.2, 0.5)
@@ -516,4 +679,7 @@ if __name__ == "__main__":
     textured_box()
     animated()
     open_chrome()
+    morphing()
+    skinned()
+    deforming_mirrors()
     engine()

@@ -44,15 +44,14 @@ ReflectionSlots ReflectionSlots::forScene(const scene::Scene& scene) {
     // their parts are planned as saddles.
     if (info.twoSided() || deforms)
       for (scene::MirrorPart& part : parts.parts) part.kind = scene::SurfaceKind::Saddle;
-    const bool seesItself =
-        object.reflected && !exactQuadric && (deforms || !parts.cannotSeeItself(info.closed));
+    const bool seesItself = object.reflected && !exactQuadric && (deforms || !parts.cannotSeeItself(info.closed));
     for (std::size_t p = 0; p < parts.parts.size(); ++p) {
       MirrorReach reach = exactQuadric
                               ? MirrorReach::ofQuadric(*info.analytic)
                               : MirrorReach::ofMeshPart(scene.meshes[info.closedTwinMesh.value_or(object.mesh)], parts,
                                                         p, parts.cannotSeeItself(info.closed));
       if (info.twoSided()) reach.normalCosine = -1.0f;  // its normals, turned to the eye, point either way
-      if (deforms) reach = MirrorReach{};                // its rest shape bounds nothing of the frame's
+      if (deforms) reach = MirrorReach{};               // its rest shape bounds nothing of the frame's
       MirrorSlots mirror{m,
                          static_cast<int>(slots.mirrors.size()),
                          stencil,

@@ -33,7 +33,7 @@ CommandLine accuracyBenchOptions() {
       "script, data inline) and the plot it draws, DIR/accuracy.png and .svg: mirror mismatch against\n"
       "frame time with the Pareto front marked.",
       withSceneChoice({
-          {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
+          {"scene", "NAME|FILE", kSceneOptionHelp, "checker-sphere"},
           {"size", "WxH", "frame size in pixels", "640x480"},
           {"poses", "N", "camera-path poses per setting, each timed and compared", std::to_string(defaults.poses)},
           {"orbit", "DEG", "how far the camera swings around its target along the path, 0 to 180",

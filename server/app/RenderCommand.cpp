@@ -29,8 +29,7 @@ constexpr int kJpegQuality = 92;
 
 CommandLine renderOptions() {
   std::vector<OptionSpec> specs = {
-      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file",
-       "checker-sphere"},
+      {"scene", "NAME|FILE", kSceneOptionHelp, "checker-sphere"},
       {"size", "WxH", "frame size in pixels", "640x480"},
       {"eye", "x,y,z", "camera position, world metres", ""},
       {"target", "x,y,z", "point the camera looks at", ""},

@@ -17,6 +17,10 @@ struct SceneChoice {
   std::optional<std::string> environment;  // "sky", "none" or an image file; unset: the scene's own
 };
 
+// What --scene takes, for every command's option table.
+inline constexpr const char* kSceneOptionHelp =
+    "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file";
+
 // --gltf-scene, --camera, --animation and --environment: how a command takes its --scene.
 std::vector<OptionSpec> sceneChoiceOptions();
 // `specs` and the scene choice options, for a command's option table; and their values.

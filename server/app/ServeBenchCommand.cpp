@@ -35,7 +35,7 @@ CommandLine serveBenchOptions() {
       "table adds how the sessions spread over the instances, and a last run kills one instance a third of\n"
       "the way in and reports how many sessions reconnected and resumed and the longest gap in their frames.",
       withSceneChoice({
-          {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
+          {"scene", "NAME|FILE", kSceneOptionHelp, "checker-sphere"},
           {"sessions", "LIST", "comma-separated session counts", "1,4,16"},
           {"sizes", "LIST", "comma-separated frame sizes", "640x360,1280x720"},
           {"seconds", "S", "measured seconds per configuration", "5"},

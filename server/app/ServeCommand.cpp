@@ -29,8 +29,7 @@ CommandLine serveOptions() {
   std::vector<OptionSpec> specs = {
       {"bind", "ADDRESS", "address to listen on; anything but loopback needs --token", "127.0.0.1"},
       {"port", "PORT", "TCP port; 0 picks a free one (printed at start)", "8080"},
-      {"scene", "NAME|FILE", "built-in scene name (see `specula scenes`), glTF file (.gltf, .glb) or JSON scene file",
-       "checker-sphere"},
+      {"scene", "NAME|FILE", kSceneOptionHelp, "checker-sphere"},
       {"max-sessions", "N", "concurrent sessions; more are refused with close code 1013", "16"},
       {"token", "SECRET", "clients must send it (?token= or Authorization: Bearer); also read from SPECULA_TOKEN", ""},
       {"web-root", "DIR", "folder served at / (the browser client)", SPECULA_DEFAULT_WEB_ROOT},

@@ -17,6 +17,7 @@
 #include "app/GlSetup.h"
 #include "app/OutputFiles.h"
 #include "app/PrivateFolder.h"
+#include "app/SceneSource.h"
 #include "app/SoakReport.h"
 #include "base/CommandLine.h"
 #include "session/ResumeStore.h"
@@ -49,7 +50,7 @@ CommandLine soakBenchOptions() {
       "clients closed), a session ended in an error or\n"
       "received no frame, or the server did not exit cleanly on SIGTERM.",
       {
-          {"scene", "NAME|FILE", "built-in scene name or JSON scene file", "checker-sphere"},
+          {"scene", "NAME|FILE", kSceneOptionHelp, "checker-sphere"},
           {"sessions", "N", "concurrent sessions", "16"},
           {"minutes", "M", "length of the run (fractions allowed: 0.5)", "10"},
           {"warmup", "S", "seconds left out of the growth trends", "a fifth of the run, at most 60"},

@@ -371,15 +371,20 @@ TEST_F(Importer, GltfSceneMakesAnOpenChromeMeshATwoSidedMirrorAndSaysSo) {
             "searched)");
 }
 
-TEST_F(Importer, GltfSceneNamesTheExtensionsItDoesNotRead) {
+TEST_F(Importer, GltfSceneNamesTheAttributesAndExtensionsItDoesNotRead) {
   json document = triangleGltf();
   document["nodes"] = json::parse(R"([{"mesh": 0, "name": "leaf"}])");
   document["scenes"] = json::parse(R"([{"nodes": [0]}])");
   document["extensionsUsed"] = json::parse(R"(["KHR_lights_punctual", "KHR_materials_clearcoat"])");
+  // A second UV set and tangent displacements (the POSITION accessor stands in for both: never read).
+  document["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 0;
+  document["meshes"][0]["primitives"][0]["targets"] = json::parse(R"([{"POSITION": 0, "TANGENT": 0}])");
   Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kTriangle)));
   ASSERT_TRUE(imported.ok()) << imported.error();
-  ASSERT_EQ(imported->scene.notes.size(), 1u);
-  EXPECT_EQ(imported->scene.notes[0], "extension KHR_materials_clearcoat is not read: what it adds is left out");
+  ASSERT_EQ(imported->scene.notes.size(), 3u);
+  EXPECT_EQ(imported->scene.notes[0], "vertex attribute TEXCOORD_1 (on 1 primitive) is not read");
+  EXPECT_EQ(imported->scene.notes[1], "morph target TANGENT displacements (on 1 primitive) are not read");
+  EXPECT_EQ(imported->scene.notes[2], "extension KHR_materials_clearcoat is not read: what it adds is left out");
 }
 
 // ---- glTF animations ---------------------------------------------------------------------------------

@@ -34,6 +34,26 @@ Result<std::size_t> chosenScene(const tinygltf::Model& model, const GltfSceneCho
 
 // What the file holds that this build does not play or read, named once each so nothing is left out in silence.
 void noteWhatIsNotRead(const tinygltf::Model& model, std::vector<std::string>& notes) {
+  // Vertex attributes beyond those read (a second UV set, vertex colours, tangents), once each with how
+  // many primitives have them; likewise morph target displacements of attributes other than these two.
+  static const std::set<std::string, std::less<>> kAttributesRead = {"POSITION",  "NORMAL",   "TEXCOORD_0", "JOINTS_0",
+                                                                     "WEIGHTS_0", "JOINTS_1", "WEIGHTS_1"};
+  std::map<std::string, std::size_t> unread, unreadTargets;
+  for (const tinygltf::Mesh& mesh : model.meshes)
+    for (const tinygltf::Primitive& primitive : mesh.primitives) {
+      for (const auto& [name, accessor] : primitive.attributes)
+        if (!kAttributesRead.contains(name)) ++unread[name];
+      std::set<std::string> displaced;
+      for (const auto& target : primitive.targets)
+        for (const auto& [name, accessor] : target)
+          if (name != "POSITION" && name != "NORMAL") displaced.insert(name);
+      for (const std::string& name : displaced) ++unreadTargets[name];
+    }
+  const auto primitives = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " primitive" : " primitives"); };
+  for (const auto& [name, count] : unread)
+    notes.push_back("vertex attribute " + name + " (on " + primitives(count) + ") is not read");
+  for (const auto& [name, count] : unreadTargets)
+    notes.push_back("morph target " + name + " displacements (on " + primitives(count) + ") are not read");
   // The extensions the importer reads; KHR_texture_transform and KHR_mesh_quantization are named where used.
   static const std::set<std::string, std::less<>> kRead = {"KHR_lights_punctual", "KHR_materials_unlit",
                                                            "KHR_texture_transform", "KHR_mesh_quantization"};

@@ -197,7 +197,12 @@ std::optional<std::string> sceneProblem(const Scene& scene) {
   }
   for (std::size_t m = 0; m < scene.meshes.size(); ++m)
     if (auto problem = deformationProblem(scene.meshes[m], jointCount[m])) return problem;
+  std::vector<std::size_t> users(scene.meshes.size(), 0);
+  for (const SceneObject& object : scene.objects) ++users[object.mesh];
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    // The GPU writes a deforming object's shape into its mesh, which no other object may share.
+    if (deforms(scene, o) && users[scene.objects[o].mesh] > 1)
+      return "object '" + scene.objects[o].name + "' deforms a mesh other objects use too; give it its own";
     const std::optional<MirrorInfo>& mirror = scene.objects[o].mirror;
     // Those describe the rest shape only.
     if (mirror && (mirror->analytic || mirror->extrusion || mirror->closedTwinMesh) && deforms(scene, o))

@@ -181,5 +181,67 @@ TEST(NodeRig, BrokenRigsAreNamed) {
   EXPECT_NE(problem([](NodeRig& r) { r.camera = RiggedCamera{0, 180.0f}; }).find("camera"), std::string::npos);
 }
 
+// What the renderer relies on of deforming objects, refused by name when broken.
+TEST(NodeRig, BrokenDeformationsAreNamed) {
+  const auto problem = [](const std::function<void(Scene&)>& edit) {
+    Scene scene;
+    scene.meshes.push_back(primitives::box("box", {1.0f, 1.0f, 1.0f}));
+    scene.meshes[0].morphTargets.push_back({std::vector<glm::vec3>(scene.meshes[0].vertices.size()), {}});
+    scene.materials.emplace_back();
+    scene.objects.resize(1);
+    scene.objects[0].name = "box";
+    scene.rig.nodes.resize(1);
+    scene.rig.clips = {
+        {"c",
+         {channel(NodeProperty::Weights, KeyInterpolation::Linear, {0.0, 1.0}, {{0, 0, 0, 0}, {1, 0, 0, 0}})},
+         1.0}};
+    scene.rig.objects = {{0, 0}};
+    scene.rig.morphed = {{0, 0, {0.0f}}};
+    edit(scene);
+    return sceneProblem(scene).value_or("");
+  };
+  EXPECT_EQ(problem([](Scene&) {}), "");
+  EXPECT_NE(problem([](Scene& s) {
+              s.objects.push_back(s.objects[0]);
+              s.objects.back().name = "twin";
+            }).find("other objects use too"),
+            std::string::npos);
+  EXPECT_NE(problem([](Scene& s) { s.rig.morphed[0].restWeights.push_back(1.0f); }).find("one rest weight"),
+            std::string::npos);
+  EXPECT_NE(problem([](Scene& s) { s.meshes[0].morphTargets[0].positions.pop_back(); }).find("one position"),
+            std::string::npos);
+  EXPECT_NE(problem([](Scene& s) { s.meshes[0].morphTargets[0].positions[0].x = 1e10f; }).find("beyond"),
+            std::string::npos);
+  EXPECT_NE(problem([](Scene& s) {
+              s.objects[0].mirror = MirrorInfo{};
+              s.objects[0].mirror->analytic = AnalyticShape{};
+            }).find("changes shape"),
+            std::string::npos);
+  // A skin: its joints in range, and every vertex's weights on joints it has, summing to 1.
+  const auto skinned = [](Scene& s) {
+    s.rig.skins = {{{0}, {glm::dmat4(1.0)}}};
+    s.rig.skinned = {{0, 0, 0}};
+    const std::size_t n = s.meshes[0].vertices.size();
+    s.meshes[0].influences = {
+        {std::vector<glm::uvec4>(n, glm::uvec4(0)), std::vector<glm::vec4>(n, glm::vec4(1, 0, 0, 0))}};
+  };
+  EXPECT_EQ(problem(skinned), "");
+  EXPECT_NE(problem([&](Scene& s) {
+              skinned(s);
+              s.meshes[0].influences[0].joints[3].x = 2;
+            }).find("follows joint 2, but its skin has 1"),
+            std::string::npos);
+  EXPECT_NE(problem([&](Scene& s) {
+              skinned(s);
+              s.meshes[0].influences[0].weights[3] = {0.5f, 0.0f, 0.0f, 0.0f};
+            }).find("do not sum to 1"),
+            std::string::npos);
+  EXPECT_NE(problem([&](Scene& s) {
+              skinned(s);
+              s.rig.skins[0].joints = {4};
+            }).find("joint is out of range"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace specula::scene

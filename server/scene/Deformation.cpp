@@ -94,6 +94,15 @@ math::Bounds deformedBounds(const DeformationExtents& extents, std::span<const f
   return bounds;
 }
 
+std::vector<glm::mat4> skinMatrices(const RigSkin& skin, const std::vector<glm::dmat4>& world, std::uint32_t meshNode) {
+  const glm::dmat4 toMesh = glm::inverse(world[meshNode]);
+  std::vector<glm::mat4> joints;
+  joints.reserve(skin.joints.size());
+  for (std::size_t j = 0; j < skin.joints.size(); ++j)
+    joints.emplace_back(toMesh * world[skin.joints[j]] * skin.inverseBind[j]);
+  return joints;
+}
+
 bool deforms(const Scene& scene, std::size_t object) {
   const auto is = [&](const auto& entry) { return entry.object == object; };
   return std::ranges::any_of(scene.rig.morphed, is) || std::ranges::any_of(scene.rig.skinned, is);

@@ -44,6 +44,10 @@ DeformationExtents deformationExtents(const Mesh& mesh, std::size_t jointCount);
 math::Bounds deformedBounds(const DeformationExtents& extents, std::span<const float> weights,
                             std::span<const glm::mat4> joints);
 
+// The matrices taking a mesh on rig node `meshNode`, skinned by `skin`, to that node's space, one per joint:
+// node world⁻¹ · joint world · inverse bind, for the node transforms `world` (NodeRig::worldAt).
+std::vector<glm::mat4> skinMatrices(const RigSkin& skin, const std::vector<glm::dmat4>& world, std::uint32_t meshNode);
+
 // Whether object `object` of `scene` changes shape with time (its morph weights animate, or a skin poses it).
 bool deforms(const Scene& scene, std::size_t object);
 

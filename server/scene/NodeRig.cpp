@@ -4,6 +4,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/Deformation.h"
+
 namespace specula::scene {
 
 namespace {
@@ -102,14 +104,7 @@ std::vector<std::vector<float>> NodeRig::weightsAt(double seconds) const {
 std::vector<std::vector<glm::mat4>> NodeRig::jointMatrices(const std::vector<glm::dmat4>& world) const {
   std::vector<std::vector<glm::mat4>> matrices;
   matrices.reserve(skinned.size());
-  for (const SkinnedObject& object : skinned) {
-    const RigSkin& skin = skins[object.skin];
-    const glm::dmat4 toMesh = glm::inverse(world[object.node]);
-    std::vector<glm::mat4>& joints = matrices.emplace_back();
-    joints.reserve(skin.joints.size());
-    for (std::size_t j = 0; j < skin.joints.size(); ++j)
-      joints.emplace_back(toMesh * world[skin.joints[j]] * skin.inverseBind[j]);
-  }
+  for (const SkinnedObject& object : skinned) matrices.push_back(skinMatrices(skins[object.skin], world, object.node));
   return matrices;
 }
 

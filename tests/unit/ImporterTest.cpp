@@ -120,6 +120,17 @@ class Importer : public testing::Test {
     EXPECT_TRUE(mesh.error().starts_with((dir_ / "asset.glb").string() + ": ")) << mesh.error();
   }
 
+  // `document`, edited by `edit`, in a GLB with `bin` must fail to import as a scene with a message
+  // containing `expected`.
+  void expectSceneRefused(json document, const std::string& bin, const std::function<void(json&)>& edit,
+                          const std::string& expected) {
+    edit(document);
+    Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, bin)));
+    ASSERT_FALSE(imported.ok()) << expected;
+    EXPECT_NE(imported.error().find(expected), std::string::npos)
+        << "message: " << imported.error() << "\nlacks: " << expected;
+  }
+
   void expectObjFailure(std::string_view text, const std::string& expected) {
     Result<Mesh> mesh = obj(text);
     ASSERT_FALSE(mesh.ok()) << "expected failure: " << expected;
@@ -502,13 +513,8 @@ TEST_F(Importer, GltfAnimationsThatAreMalformedAreRefusedByTheirJsonPath) {
   expectNear(originAt(played->scene, "node 0", 0.25), {0.25f, 0, 0});
 
   const auto expectRefused = [&](const std::function<void(json&)>& edit, const std::string& expected) {
-    json animation = good;
-    edit(animation);
-    Result<ImportedGltfScene> imported =
-        importGltfScene(write("asset.glb", glb(animatedTriangle(animation), kAnimationData)));
-    ASSERT_FALSE(imported.ok()) << expected;
-    EXPECT_NE(imported.error().find(expected), std::string::npos)
-        << "message: " << imported.error() << "\nlacks: " << expected;
+    expectSceneRefused(
+        animatedTriangle(good), kAnimationData, [&](json& d) { edit(d["animations"][0]); }, expected);
   };
   expectRefused([](json& a) { a["channels"][0]["sampler"] = 5; },
                 "$.animations[0].channels[0].sampler: refers to sampler 5, but the animation has 1");
@@ -620,12 +626,7 @@ TEST_F(Importer, GltfMorphTargetsThatAreMalformedAreRefusedByTheirJsonPath) {
   EXPECT_NEAR(weightsAt(played->scene, "node 0", 0.25)[0], 0.25f, 1e-6f) << "the key times (0, 1) are the weights";
 
   const auto expectRefused = [&](const std::function<void(json&)>& edit, const std::string& expected) {
-    json document = morphingTriangle(weights, oneTarget);
-    edit(document);
-    Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kAnimationData)));
-    ASSERT_FALSE(imported.ok()) << expected;
-    EXPECT_NE(imported.error().find(expected), std::string::npos)
-        << "message: " << imported.error() << "\nlacks: " << expected;
+    expectSceneRefused(morphingTriangle(weights, oneTarget), kAnimationData, edit, expected);
   };
   expectRefused([](json& d) { d["animations"][0]["channels"][0]["target"]["node"] = 1; },
                 "$.animations[0].channels[0].target.node: node 1 has no mesh with morph targets for its weights");
@@ -742,12 +743,7 @@ TEST_F(Importer, GltfSkinsThatAreMalformedAreRefusedByTheirJsonPath) {
   expectNear(ringCentreAt(played->scene, "node 0", 0.5, 1, 1), {1.0f, 1.0f, 0.0f});  // the joint rose 1 m by 0.5 s
 
   const auto expectRefused = [&](const std::function<void(json&)>& edit, const std::string& expected) {
-    json document = skinnedTriangle();
-    edit(document);
-    Result<ImportedGltfScene> imported = importGltfScene(write("asset.glb", glb(document, kSkinData)));
-    ASSERT_FALSE(imported.ok()) << expected;
-    EXPECT_NE(imported.error().find(expected), std::string::npos)
-        << "message: " << imported.error() << "\nlacks: " << expected;
+    expectSceneRefused(skinnedTriangle(), kSkinData, edit, expected);
   };
   expectRefused([](json& d) { d["nodes"][0]["skin"] = 4; }, "$.nodes[0].skin: refers to skin 4, but the file has 1");
   expectRefused([](json& d) { d["skins"][0]["joints"][0] = 7; },

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/Deformation.h"
 #include "scene/SceneChecks.h"
 #include "scene/gltf/GltfAnimations.h"
 #include "scene/gltf/GltfCamera.h"
@@ -120,10 +121,7 @@ Result<ImportedGltfScene> sceneFromModel(const tinygltf::Model& model, const Dec
       rigSkin[skin] = static_cast<std::uint32_t>(rig.skins.size());
       rig.skins.push_back(std::move(read).value());
     }
-    const RigSkin& joints = rig.skins[rigSkin[skin]];
-    const glm::dmat4 toMesh = glm::inverse(restWorld[i]);
-    for (std::size_t j = 0; j < joints.joints.size(); ++j)
-      deformation.restJoints.emplace_back(toMesh * restWorld[joints.joints[j]] * joints.inverseBind[j]);
+    deformation.restJoints = skinMatrices(rig.skins[rigSkin[skin]], restWorld, i);
     if (rig.moves()) deformation.skin = rigSkin[skin];
     return deformation;
   };

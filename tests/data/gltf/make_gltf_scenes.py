@@ -401,13 +401,24 @@ def open_chrome():
     g.write_glb("open-chrome.glb")
 
 
+# The materials several scenes share, by name: (base colour, metallic, roughness).
+MATERIALS = {
+    "chrome": ((0.9, 0.9, 0.9), 1.0, 0.05),
+    "floor": ((0.45, 0.5, 0.55), 0.0, 0.8),
+    "red": ((0.8, 0.1, 0.1), 0.0, 0.6),
+    "green": ((0.1, 0.7, 0.2), 0.0, 0.6),
+    "blue": ((0.1, 0.2, 0.8), 0.0, 0.6),
+}
+
+
+def materials(g, *names):
+    """The named shared materials, added to `g` in that order; their indices."""
+    return [g.material(name, *MATERIALS[name]) for name in names]
+
+
 def animated():
     g = Builder()
-    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
-    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
-    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
-    green = g.material("green", (0.1, 0.7, 0.2), 0.0, 0.6)
-    blue = g.material("blue", (0.1, 0.2, 0.8), 0.0, 0.6)
+    chrome, grey, red, green, blue = materials(g, "chrome", "floor", "red", "green", "blue")
     ball = g.mesh("ball", *sphere(1.0, 24, 48), chrome)
     floor = g.mesh("floor", *quad(5.0), grey)
     cube = lambda name, material: g.mesh(name, *box((0.4, 0.4, 0.4)), material)
@@ -460,9 +471,7 @@ def cloth(width, height, columns, rows):
 
 def morphing():
     g = Builder()
-    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
-    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
-    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
+    chrome, grey, red = materials(g, "chrome", "floor", "red")
     yellow = g.material("cloth", (0.9, 0.75, 0.1), 0.0, 0.7)
     positions, normals, indices, targets = cloth(4.0, 2.4, 24, 16)
     sheet = g.mesh("cloth", positions, normals, indices, yellow, targets=targets)
@@ -531,8 +540,7 @@ def bend(shoulder, elbow):
 
 def skinned():
     g = Builder()
-    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
-    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
+    chrome, grey = materials(g, "chrome", "floor")
     green = g.material("arm", (0.1, 0.7, 0.3), 0.0, 0.6)
     mesh, shoulder, elbow, skin = arm(g, green, [1.3, 0.0, 1.4])  # front right of the sphere: reflected in it
     arm_node = g.node(name="arm", mesh=mesh, skin=skin, translation=[5, 0, 0])
@@ -546,11 +554,7 @@ def skinned():
 
 def deforming_mirrors():
     g = Builder()
-    chrome = g.material("chrome", (0.9, 0.9, 0.9), 1.0, 0.05)
-    grey = g.material("floor", (0.45, 0.5, 0.55), 0.0, 0.8)
-    red = g.material("red", (0.8, 0.1, 0.1), 0.0, 0.6)
-    green = g.material("green", (0.1, 0.7, 0.2), 0.0, 0.6)
-    blue = g.material("blue", (0.1, 0.2, 0.8), 0.0, 0.6)
+    chrome, grey, red, green, blue = materials(g, "chrome", "floor", "red", "green", "blue")
     positions, normals, indices = sphere(1.0, 24, 48)
     # Squashed: 1.3 times wider, 0.65 times as tall; the normal delta is the squashed ellipsoid's normal's.
     squash = [[0.3 * p[0], -0.35 * p[1], 0.3 * p[2]] for p in positions]

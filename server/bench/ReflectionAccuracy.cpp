@@ -14,6 +14,7 @@
 #include "math/PatchReflection.h"
 #include "math/SphereReflection.h"
 #include "reference/PatchSurface.h"
+#include "scene/Deformation.h"
 
 namespace specula::bench {
 
@@ -258,9 +259,14 @@ ReflectionPointErrors measureReflectionPoints(const render::Renderer& renderer, 
       // A vertex on the patches themselves is its own reflection point: nothing to judge.
       if (patches && range.object == mirror.mirrorObject) continue;
       const scene::Mesh& mesh = scene.meshes[scene.objects[range.object].mesh];
-      for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      // A deforming object is searched as the pose shapes it, so it is judged in that shape too.
+      std::vector<scene::Vertex> deformed;
+      if (scene::deforms(scene, range.object))
+        deformed = scene::deformedVertices(mesh, pose.morphWeights[range.object], pose.jointMatrices[range.object]);
+      const std::vector<scene::Vertex>& vertices = deformed.empty() ? mesh.vertices : deformed;
+      for (std::size_t v = 0; v < vertices.size(); ++v) {
         const std::size_t slot = range.firstSlot + v;
-        const glm::dvec3 vertex(pose.objectToWorld[range.object] * glm::vec4(mesh.vertices[v].position, 1.0f));
+        const glm::dvec3 vertex(pose.objectToWorld[range.object] * glm::vec4(vertices[v].position, 1.0f));
         judge(errors, frame, *shape, eye, vertex, glm::vec3(results[slot].reflectionPoint), results[slot].state.w, slot,
               marginPixels);
       }

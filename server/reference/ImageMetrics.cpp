@@ -121,11 +121,7 @@ Result<MaskedMismatch> maskedMismatch(const RgbaView& a, const RgbaView& b, std:
   for (std::size_t i = 0; i < mask.size(); ++i) {
     if (mask[i] == 0) continue;
     ++result.inside;
-    for (std::size_t c = 0; c < 3; ++c)
-      if (std::abs(a.rgba[4 * i + c] - b.rgba[4 * i + c]) > threshold) {
-        ++result.mismatched;
-        break;
-      }
+    if (pixelsMismatch(&a.rgba[4 * i], &b.rgba[4 * i], threshold)) ++result.mismatched;
   }
   return result;
 }

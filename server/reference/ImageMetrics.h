@@ -31,6 +31,13 @@ Result<double> ssim(const RgbaView& a, const RgbaView& b);
 // checker cell, or a missing reflection.
 inline constexpr int kDefaultMismatchThreshold = 16;
 
+// Whether two RGBA pixels mismatch: some channel of R, G, B differs by more than `threshold`.
+inline bool pixelsMismatch(const std::uint8_t* a, const std::uint8_t* b, int threshold) {
+  for (int c = 0; c < 3; ++c)
+    if (a[c] - b[c] > threshold || b[c] - a[c] > threshold) return true;
+  return false;
+}
+
 struct MaskedMismatch {
   std::size_t inside = 0;      // pixels with a non-zero mask entry
   std::size_t mismatched = 0;  // of those, the ones that mismatch

@@ -13,6 +13,9 @@ struct RTCDeviceTy;
 
 namespace specula::reference {
 
+class PosedScene;
+class PixelTracer;
+
 struct RayTracerOptions {
   int width = 640;  // pixels
   int height = 480;
@@ -57,6 +60,13 @@ class RayTracer {
   // Renders the scene at `pose` (which must come from this scene). Fails on a camera that cannot
   // produce a view, a non-positive size or bounce count, or an Embree error. Safe to call concurrently.
   Result<ReferenceImage> render(const scene::ScenePose& pose, const RayTracerOptions& options) const;
+
+  // The pose's geometry (objects placed, deformed), which every camera of that pose can share.
+  Result<std::shared_ptr<const PosedScene>> posedScene(const scene::ScenePose& pose) const;
+  // Traces single pixels of `camera`'s view of `posed` (from this tracer's scene) as render() traces
+  // them; `options.threads` is unused. Fails where render() would on the camera or the options.
+  Result<std::unique_ptr<PixelTracer>> pixelTracer(std::shared_ptr<const PosedScene> posed, const math::Camera& camera,
+                                                   const RayTracerOptions& options) const;
 
  private:
   RayTracer(std::shared_ptr<const scene::Scene> scene, RTCDeviceTy* device);

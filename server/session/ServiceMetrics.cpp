@@ -29,11 +29,18 @@ std::string ServiceMetrics::prometheusText() const {
          static_cast<double>(writeTimeouts.load()));
   sample("specula_render_failures_total", "counter", "Frames the renderer could not produce.",
          static_cast<double>(renderFailures.load()));
+  sample("specula_accuracy_failures_total", "counter", "Frames whose live accuracy estimate could not be traced.",
+         static_cast<double>(accuracyFailures.load()));
   renderMs.appendPrometheus(out, "specula_render_milliseconds", "Wall-clock render time per frame.");
   encodeMs.appendPrometheus(out, "specula_encode_milliseconds", "JPEG encode time per frame.");
   latencyMs.appendPrometheus(out, "specula_input_to_frame_milliseconds",
                              "From an input's arrival to the frame that reflects it being queued for sending.");
   frameBytes.appendPrometheus(out, "specula_frame_bytes", "Size of each frame message.");
+  accuracyMismatch.appendPrometheus(out, "specula_accuracy_mismatch_percent",
+                                    "Live accuracy estimate per sampled frame: the share of its sampled mirror pixels "
+                                    "that differ from the exact reference, percent.");
+  accuracyMs.appendPrometheus(out, "specula_accuracy_milliseconds",
+                              "Server CPU time of each frame's live accuracy estimate (beside rendering).");
   return out;
 }
 

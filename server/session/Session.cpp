@@ -302,8 +302,14 @@ Status Session::applyAnimation(const v1::AnimationControl& control, Clock::time_
 
 Status Session::applySettings(const v1::RenderSettings& update) {
   std::lock_guard lock(mutex_);
+  const SessionSettings before = state_.settings;
   Status applied = applySettingsUpdate(update, state_.settings);
   settingsChanged_ = settingsChanged_ || applied;
+  if (applied && !(state_.settings == before)) {  // estimates of frames rendered before judge other settings
+    ++settingsEpoch_;
+    latestAccuracy_.reset();
+    accuracyWindow_.clear();
+  }
   return applied;
 }
 
@@ -364,6 +370,30 @@ FrameRequest Session::takeFrame(Clock::time_point now) {
   return request;
 }
 
+namespace {
+
+v1::AccuracyEstimate accuracyEstimate(const FrameAccuracy& latest, const AccuracyWindow& window) {
+  v1::AccuracyEstimate out;
+  const reference::ShareEstimate& frame = latest.sample.mismatch;
+  out.set_frame(latest.frame);
+  out.set_sampled(static_cast<std::uint32_t>(frame.sampled));
+  out.set_mismatched(static_cast<std::uint32_t>(frame.hits));
+  out.set_mismatch(frame.share());
+  out.set_low(frame.low);
+  out.set_high(frame.high);
+  const reference::ShareEstimate pooled = window.pooled();
+  out.set_window_frames(static_cast<std::uint32_t>(window.frames()));
+  out.set_window_sampled(pooled.sampled);
+  out.set_window_mismatch(pooled.share());
+  out.set_window_low(pooled.low);
+  out.set_window_high(pooled.high);
+  out.set_trace_ms(latest.milliseconds);
+  out.set_probed(static_cast<std::uint32_t>(latest.sample.probedPixels));
+  return out;
+}
+
+}  // namespace
+
 void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> rendered, std::string jpeg,
                       double encodeMs) {
   const RenderOutput& output = *rendered;
@@ -396,6 +426,8 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
   const math::Camera& camera = request.job.pose.camera;
   *frame.mutable_camera() = protocol::cameraUpdate(camera.eye, camera.target, camera.up, camera.fovYDegrees);
   std::shared_ptr<net::MessageSink> sink;
+  std::optional<AccuracyJob> accuracyJob;
+  std::uint64_t epoch = 0;
   {
     std::lock_guard lock(mutex_);
     busy_ = false;
@@ -403,6 +435,11 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     lastOutput_ = std::move(rendered);
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
+    if (latestAccuracy_) *frame.mutable_accuracy() = accuracyEstimate(*latestAccuracy_, accuracyWindow_);
+    if (!reencoded && state_.settings.accuracySamples > 0)
+      accuracyJob = AccuracyJob{frame.number(), request.job.pose, request.job.samples, state_.settings.accuracySamples,
+                                lastOutput_};
+    epoch = settingsEpoch_;
     if (std::exchange(settingsChanged_, false)) *frame.mutable_settings() = settingsToProto(state_.settings);
     if (const SignedResume* signedResume = hub_.signedResume())
       frame.set_resume_token(signedResume->issue(state_, now, WallClock::now()));
@@ -417,7 +454,25 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     metrics.frameBytes.observe(static_cast<double>(payload.size()));
     sink->sendFrame(std::move(payload));
   }
+  if (AccuracySampler* sampler = hub_.accuracySampler(); sampler && accuracyJob && sink)
+    sampler->submit(this, std::move(*accuracyJob), [weak = weak_from_this(), epoch](Result<FrameAccuracy> accuracy) {
+      if (auto session = weak.lock()) session->accuracyMeasured(epoch, std::move(accuracy));
+    });
   hub_.wakeScheduler();
+}
+
+void Session::accuracyMeasured(std::uint64_t epoch, Result<FrameAccuracy> accuracy) {
+  ServiceMetrics& metrics = hub_.metrics();
+  if (!accuracy) {
+    metrics.accuracyFailures++;
+    return;
+  }
+  metrics.accuracyMismatch.observe(100.0 * accuracy->sample.mismatch.share());
+  metrics.accuracyMs.observe(accuracy->milliseconds);
+  std::lock_guard lock(mutex_);
+  if (epoch != settingsEpoch_) return;
+  accuracyWindow_.add(*accuracy);
+  latestAccuracy_ = std::move(*accuracy);
 }
 
 void Session::renderFailed(const FrameRequest&, const std::string& text) {
@@ -452,6 +507,7 @@ void Session::onFrameReplaced() {
 }
 
 void Session::onClosed() {
+  if (AccuracySampler* sampler = hub_.accuracySampler()) sampler->forget(this);
   std::optional<SessionState> saved;
   std::string token;
   {

@@ -9,6 +9,7 @@
 
 #include "WireEncoding.h"
 #include "net/Connection.h"
+#include "session/AccuracySampler.h"
 #include "session/FrameRenderer.h"
 #include "session/SessionState.h"
 
@@ -53,6 +54,8 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   void deliver(const FrameRequest& request, std::shared_ptr<const RenderOutput> output, std::string jpeg,
                double encodeMs);
   void renderFailed(const FrameRequest& request, const std::string& message);
+  // The accuracy sampler's result for a frame rendered under settings epoch `epoch`.
+  void accuracyMeasured(std::uint64_t epoch, Result<FrameAccuracy> accuracy);
 
  private:
   void handle(const v1::ClientMessage& message, Clock::time_point now);
@@ -89,6 +92,10 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   std::uint64_t inputSequence_ = 0;
   double inputClientTimeMs_ = 0.0;
   Clock::time_point inputArrival_{};
+  // Live accuracy: the latest estimate and the window since the settings last changed (a new epoch).
+  std::uint64_t settingsEpoch_ = 0;
+  std::optional<FrameAccuracy> latestAccuracy_;
+  AccuracyWindow accuracyWindow_;
   std::uint64_t framesStarted_ = 0, framesDelivered_ = 0, framesSent_ = 0, framesSkipped_ = 0, bytesSent_ = 0;
 };
 

@@ -26,6 +26,11 @@ Result<std::unique_ptr<SessionHub>> SessionHub::start(std::shared_ptr<const scen
     if (!signedResume) return Error{signedResume.error()};
     hub->signedResume_.emplace(std::move(signedResume.value()));
   }
+  if (hub->options_.estimateAccuracy) {
+    auto sampler = AccuracySampler::start(hub->scene_);
+    if (!sampler) return Error{sampler.error()};
+    hub->accuracy_ = std::move(*sampler);
+  }
   auto scheduler = RenderScheduler::start(std::move(rendererFactory), hub->options_.scheduler);
   if (!scheduler) return Error{scheduler.error()};
   hub->scheduler_ = std::move(*scheduler);
@@ -62,6 +67,7 @@ void SessionHub::refuseNewSessions() {
 
 void SessionHub::stop() {
   if (scheduler_) scheduler_->stop();
+  if (accuracy_) accuracy_->stop();
   std::map<const Session*, std::shared_ptr<Session>> dropped;
   {
     std::lock_guard lock(mutex_);

@@ -11,6 +11,7 @@
 #include "base/Result.h"
 #include "net/Connection.h"
 #include "scene/Scene.h"
+#include "session/AccuracySampler.h"
 #include "session/FrameRenderer.h"
 #include "session/RenderScheduler.h"
 #include "session/ResumeStore.h"
@@ -35,6 +36,9 @@ struct HubOptions {
   std::string resumeSecret;
   SessionSettings defaults;  // settings a new session starts with
   SchedulerOptions scheduler;
+  // Trace a sample of every frame with the reference ray tracer (AccuracySampler) for the live
+  // accuracy estimate; sessions choose how many pixels (SessionSettings::accuracySamples).
+  bool estimateAccuracy = true;
 };
 
 class SessionHub : public net::ConnectionAcceptor {
@@ -57,6 +61,7 @@ class SessionHub : public net::ConnectionAcceptor {
   const HubOptions& options() const { return options_; }
   ServiceMetrics& metrics() { return metrics_; }
   ResumeStore& resumeStore() { return resumes_; }
+  AccuracySampler* accuracySampler() { return accuracy_.get(); }  // null when not estimating
   const SignedResume* signedResume() const { return signedResume_ ? &*signedResume_ : nullptr; }
   // Why this instance takes no new session now ("full", "draining"), or nullopt: GET /readyz.
   std::optional<std::string> notReady() const;
@@ -80,6 +85,7 @@ class SessionHub : public net::ConnectionAcceptor {
   ResumeStore resumes_;
   std::optional<SignedResume> signedResume_;
   std::unique_ptr<RenderScheduler> scheduler_;
+  std::unique_ptr<AccuracySampler> accuracy_;
   mutable std::mutex mutex_;
   std::map<const Session*, std::shared_ptr<Session>> sessions_;
   bool refusing_ = false;

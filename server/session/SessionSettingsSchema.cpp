@@ -57,6 +57,10 @@ std::vector<SessionSetting> declareSettings() {
                              &SessionSettings::stillSamples));
   settings.push_back(samples("interactive-samples", "interactive_samples",
                              "anti-aliasing of frames sent while input arrives", &SessionSettings::interactiveSamples));
+  settings.push_back(integer("accuracy-samples", "accuracy_samples",
+                             "mirror pixels of each frame the reference ray tracer traces for the live accuracy "
+                             "estimate (0: no estimate)",
+                             0, reference::kMaxAccuracySamples, &SessionSettings::accuracySamples));
   return settings;
 }
 

@@ -9,6 +9,7 @@
 #include "math/Camera.h"
 #include "math/SamplePattern.h"
 #include "passes/ReflectionSettings.h"
+#include "reference/MismatchSample.h"
 #include "session/AnimationClock.h"
 
 namespace specula::session {
@@ -20,6 +21,10 @@ struct SessionSettings {
   int interactiveQuality = 60;                  // frames sent while input keeps arriving
   int stillSamples = math::kStillFrameSamples;  // anti-aliasing (math::samplePattern) of still frames
   int interactiveSamples = 1;                   // and of frames sent while input keeps arriving
+  // Mirror pixels a frame the live accuracy estimate traces exactly (AccuracySampler); 0: none.
+  int accuracySamples = reference::kDefaultAccuracySamples;
+
+  bool operator==(const SessionSettings&) const = default;
 };
 
 struct SessionState {

@@ -49,7 +49,8 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
   Clock::time_point nextInput = Clock::now();
   const Clock::time_point began = Clock::now();
   std::uint64_t sequence = 0;
-  double renderSum = 0.0, encodeSum = 0.0, serverSum = 0.0;
+  double renderSum = 0.0, encodeSum = 0.0, serverSum = 0.0, mismatchSum = 0.0, accuracyMsSum = 0.0;
+  std::uint64_t lastEstimated = 0;  // Frame.number of the last estimate counted: frames repeat it until the next
   std::optional<Clock::time_point> lastFrame;
   while (Clock::now() < end) {
     if (options.script) {
@@ -107,6 +108,14 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
     renderSum += frame.render_ms();
     encodeSum += frame.encode_ms();
     serverSum += frame.server_ms();
+    if (frame.has_accuracy() && frame.accuracy().frame() != lastEstimated) {
+      const v1::AccuracyEstimate& accuracy = frame.accuracy();
+      lastEstimated = accuracy.frame();
+      ++result.estimatedFrames;
+      mismatchSum += accuracy.mismatch();
+      accuracyMsSum += accuracy.trace_ms();
+      result.worstMismatchHigh = std::max(result.worstMismatchHigh, accuracy.high());
+    }
   }
   result.reconnects = client.reconnects();
   client.close();
@@ -117,6 +126,10 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
     result.renderMsMean = renderSum / n;
     result.encodeMsMean = encodeSum / n;
     result.serverMsMean = serverSum / n;
+  }
+  if (result.estimatedFrames > 0) {
+    result.mismatchMean = mismatchSum / static_cast<double>(result.estimatedFrames);
+    result.accuracyMsMean = accuracyMsSum / static_cast<double>(result.estimatedFrames);
   }
   return result;
 }
@@ -145,8 +158,13 @@ LoadReport runLoad(const LoadOptions& options) {
 
   report.seconds = std::chrono::duration<double>(options.duration).count();
   std::vector<double> latencies, fps;
-  double renderSum = 0.0, encodeSum = 0.0;
+  double renderSum = 0.0, encodeSum = 0.0, mismatchSum = 0.0, accuracyMsSum = 0.0;
   for (const SessionLoad& session : report.sessions) {
+    const auto estimated = static_cast<double>(session.estimatedFrames);
+    report.estimatedFrames += session.estimatedFrames;
+    mismatchSum += session.mismatchMean * estimated;
+    accuracyMsSum += session.accuracyMsMean * estimated;
+    report.worstMismatchHigh = std::max(report.worstMismatchHigh, session.worstMismatchHigh);
     report.frames += session.frames;
     report.bytes += session.bytes;
     report.skippedFrames += session.skippedFrames;
@@ -169,6 +187,10 @@ LoadReport runLoad(const LoadOptions& options) {
     report.encodeMsMean = encodeSum / n;
     report.bytesPerFrame = static_cast<double>(report.bytes) / n;
   }
+  if (report.estimatedFrames > 0) {
+    report.mismatchMean = mismatchSum / static_cast<double>(report.estimatedFrames);
+    report.accuracyMsMean = accuracyMsSum / static_cast<double>(report.estimatedFrames);
+  }
   return report;
 }
 
@@ -188,6 +210,10 @@ std::string loadReportJson(const LoadReport& report) {
                         {"resumes_refused", s.resumesRefused},
                         {"resumed", s.resumed},
                         {"longest_gap_ms", s.longestGapMs},
+                        {"estimated_frames", s.estimatedFrames},
+                        {"mirror_mismatch_mean", s.mismatchMean},
+                        {"mirror_mismatch_worst_high", s.worstMismatchHigh},
+                        {"accuracy_ms_mean", s.accuracyMsMean},
                         {"error", s.error}});
   const LoadOptions& o = report.options;
   nlohmann::json out = {{"options",
@@ -211,6 +237,10 @@ std::string loadReportJson(const LoadReport& report) {
                           {"bytes_per_frame", report.bytesPerFrame},
                           {"bytes", report.bytes},
                           {"skipped_frames", report.skippedFrames},
+                          {"estimated_frames", report.estimatedFrames},
+                          {"mirror_mismatch_mean", report.mismatchMean},
+                          {"mirror_mismatch_worst_high", report.worstMismatchHigh},
+                          {"accuracy_ms_mean", report.accuracyMsMean},
                           {"errors", report.errors}}},
                         {"sessions", sessions}};
   return out.dump(2);

@@ -41,7 +41,10 @@ struct SessionLoad {
   int resumesRefused = 0;     // of those, the ones the server could not resume
   int resumed = 0;            // welcomes that brought the session back from its resume token
   double longestGapMs = 0.0;  // between two frames while measuring: what a lost connection cost
-  std::string error;          // empty when the session ran to the end
+  // The live accuracy estimates received while measuring, each counted once (Frame.accuracy).
+  std::uint64_t estimatedFrames = 0;
+  double mismatchMean = 0.0, worstMismatchHigh = 0.0, accuracyMsMean = 0.0;
+  std::string error;  // empty when the session ran to the end
 };
 
 struct LoadReport {
@@ -52,6 +55,9 @@ struct LoadReport {
   double fpsMean = 0.0, fpsMin = 0.0;                           // per session
   double latencyP50 = 0.0, latencyP99 = 0.0, latencyMax = 0.0;  // ms, all sessions together
   double renderMsMean = 0.0, encodeMsMean = 0.0, bytesPerFrame = 0.0;
+  // Live accuracy estimates, all sessions: how many, their mean mismatch, the highest upper bound, CPU ms.
+  std::uint64_t estimatedFrames = 0;
+  double mismatchMean = 0.0, worstMismatchHigh = 0.0, accuracyMsMean = 0.0;
 };
 
 // Runs the load; connection failures are reported per session, not thrown.

@@ -89,6 +89,13 @@ int main(int argc, char** argv) {
       report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99, report.latencyMax,
       static_cast<unsigned long long>(report.frames), report.bytesPerFrame / 1024.0,
       static_cast<unsigned long long>(report.skippedFrames), static_cast<unsigned long long>(report.errors));
+  if (report.estimatedFrames > 0)
+    std::printf(
+        "accuracy  %llu frames estimated live: mirror mismatch mean %.2f %%, the worst frame's 95 %% upper "
+        "bound %.2f %%; %.1f ms server CPU a frame estimated\n",
+        static_cast<unsigned long long>(report.estimatedFrames), 100.0 * report.mismatchMean,
+        100.0 * report.worstMismatchHigh, report.accuracyMsMean);
+  else std::printf("accuracy  no frame carried a live estimate (the sessions' accuracy_samples is 0)\n");
   if (options.has("json")) {
     const std::string json = client::loadReportJson(report) + "\n";
     if (options.text("json") == "-") {

@@ -1,9 +1,11 @@
 // specula-path: plays a camera (and scene time) path against a server, at the path's own pace or as
 // fast as frames come; writes a CSV row per frame and optionally every frame's JPEG; prints a summary.
 // Exits 1 on protocol errors (an error message, a close, a frame that never comes).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <thread>
 
 #include "CameraConversions.h"
@@ -37,18 +39,29 @@ v1::ClientMessage animationMessage(v1::AnimationControl::Action action, double t
   return message;
 }
 
+// The live accuracy estimate's columns: empty until the server has sent one (or with it off).
+std::string accuracyCells(const v1::Frame& frame) {
+  if (!frame.has_accuracy()) return ",,,,,,";
+  const v1::AccuracyEstimate& a = frame.accuracy();
+  char cells[160];
+  std::snprintf(cells, sizeof cells, "%llu,%u,%.5f,%.5f,%.5f,%.5f,%.5f", static_cast<unsigned long long>(a.frame()),
+                a.sampled(), a.mismatch(), a.low(), a.high(), a.window_mismatch(), a.window_high());
+  return cells;
+}
+
 std::string csvRow(std::size_t sample, double pathTime, const v1::Frame& frame, double latencyMs) {
   std::string stages;
   for (const v1::StageTime& stage : frame.stages())
     stages += (stages.empty() ? "" : ";") + stage.name() + "=" + std::to_string(stage.ms());
-  char row[768];
-  std::snprintf(row, sizeof row, "%zu,%.4f,%llu,%llu,%.3f,%.3f,%.3f,%.3f,%zu,%d,%u,%u,%.3f,%u,%u,%.3f,%u,%u,%u,%u,%s\n",
-                sample, pathTime, static_cast<unsigned long long>(frame.input_sequence()),
-                static_cast<unsigned long long>(frame.number()), latencyMs, frame.render_ms(), frame.encode_ms(),
-                frame.server_ms(), frame.jpeg().size(), frame.still() ? 1 : 0, frame.width(), frame.height(),
-                frame.scene_time_ms(), frame.search().mirrors(), frame.search().searched(), frame.search().mean_steps(),
-                frame.search().unsolved(), frame.tessellation().input_triangles(),
-                frame.tessellation().finished_triangles(), frame.tessellation().midpoint_searches(), stages.c_str());
+  char row[960];
+  std::snprintf(
+      row, sizeof row, "%zu,%.4f,%llu,%llu,%.3f,%.3f,%.3f,%.3f,%zu,%d,%u,%u,%.3f,%u,%u,%.3f,%u,%u,%u,%u,%s,%s\n",
+      sample, pathTime, static_cast<unsigned long long>(frame.input_sequence()),
+      static_cast<unsigned long long>(frame.number()), latencyMs, frame.render_ms(), frame.encode_ms(),
+      frame.server_ms(), frame.jpeg().size(), frame.still() ? 1 : 0, frame.width(), frame.height(),
+      frame.scene_time_ms(), frame.search().mirrors(), frame.search().searched(), frame.search().mean_steps(),
+      frame.search().unsolved(), frame.tessellation().input_triangles(), frame.tessellation().finished_triangles(),
+      frame.tessellation().midpoint_searches(), accuracyCells(frame).c_str(), stages.c_str());
   return row;
 }
 
@@ -73,7 +86,9 @@ int main(int argc, char** argv) {
       "--fps times per path second and plays it against a server. --pace frames sends the next sample once the\n"
       "frame for the previous one arrived (every sample gets its frame); --pace realtime sends samples on the\n"
       "path's clock and records whatever frames come (latest wins). Writes one CSV row per frame: latency,\n"
-      "server timings, search and tessellation statistics; --frames-dir also keeps every JPEG.",
+      "server timings, search and tessellation statistics and the live accuracy estimate (the share of mirror\n"
+      "pixels the server's ray tracer finds wrong in a sample, with its 95 % interval); --frames-dir also keeps\n"
+      "every JPEG.",
       std::move(specs));
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   if (auto exitCode = options.parseOrExit(arguments, fail)) return *exitCode;
@@ -99,7 +114,9 @@ int main(int argc, char** argv) {
   std::ofstream csv(options.text("csv"), std::ios::trunc);
   if (!csv) return fail("could not write '" + options.text("csv") + "': check the folder exists and is writable");
   csv << "sample,path_time_s,input_sequence,frame,latency_ms,render_ms,encode_ms,server_ms,bytes,still,width,height,"
-         "scene_time_ms,mirrors,searched,mean_steps,unsolved,tess_input,tess_finished,midpoint_searches,stages\n";
+         "scene_time_ms,mirrors,searched,mean_steps,unsolved,tess_input,tess_finished,midpoint_searches,"
+         "accuracy_frame,accuracy_sampled,accuracy_mismatch,accuracy_low,accuracy_high,window_mismatch,window_high,"
+         "stages\n";
 
   v1::Hello hello;
   hello.set_protocol_version(1);
@@ -121,6 +138,8 @@ int main(int argc, char** argv) {
   std::uint64_t bytes = 0;
   std::vector<double> latencies;
   std::map<std::uint64_t, double> sentAt;
+  std::optional<v1::AccuracyEstimate> lastAccuracy;
+  double worstFrameHigh = 0.0;
   auto receiveOne = [&](std::chrono::milliseconds wait) -> std::optional<v1::ServerMessage> {
     auto message = client.receive(wait);
     if (!message) {
@@ -148,6 +167,10 @@ int main(int argc, char** argv) {
       ++frames;
       bytes += frame.jpeg().size();
       csv << csvRow(currentSample, currentPathTime, frame, latency);
+      if (frame.has_accuracy()) {
+        lastAccuracy = frame.accuracy();
+        worstFrameHigh = std::max(worstFrameHigh, frame.accuracy().high());
+      }
       if (!framesDir.empty()) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%05zu.jpg", frames);
@@ -201,6 +224,16 @@ int main(int argc, char** argv) {
       samples, frames, seconds, static_cast<double>(frames) / seconds, nearestRankPercentile(latencies, 0.5),
       nearestRankPercentile(latencies, 0.99),
       frames ? static_cast<double>(bytes) / static_cast<double>(frames) / 1024.0 : 0.0, options.text("csv").c_str());
+  if (lastAccuracy)
+    std::printf(
+        "mirror mismatch, live estimate: last %u frames %.2f %% (95 %% interval %.2f to %.2f %%); the worst "
+        "frame's upper bound %.2f %%\n",
+        lastAccuracy->window_frames(), 100.0 * lastAccuracy->window_mismatch(), 100.0 * lastAccuracy->window_low(),
+        100.0 * lastAccuracy->window_high(), 100.0 * worstFrameHigh);
+  else
+    std::printf(
+        "mirror mismatch, live estimate: none received (the session's accuracy_samples is 0, or no frame "
+        "was estimated yet)\n");
   if (!problem.empty()) return fail(problem);
   return 0;
 }

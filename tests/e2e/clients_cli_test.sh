@@ -29,6 +29,8 @@ check "the frames reflect the path's scene time" awk -F, 'NR > 1 && $3 == 5 && $
 check "it wrote every frame as JPEG" test "$(ls "$work/frames" | wc -l)" -eq "$(($(wc -l <"$work/path.csv") - 1))"
 check "the JPEGs are JPEGs" bash -c "head -c 2 '$work/frames/frame_00001.jpg' | od -An -tx1 | grep -q 'ff d8'"
 check "it shows progress" grep -q "sample 5/5" "$work/path.err"
+check "its CSV carries the live accuracy estimate of earlier frames" awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i } NR > 1 && $c["accuracy_sampled"] > 0 && $c["accuracy_frame"] < $c["frame"] && $c["accuracy_low"] <= $c["accuracy_mismatch"] && $c["accuracy_mismatch"] <= $c["accuracy_high"] { found = 1 } END { exit !found }' "$work/path.csv"
+check "its summary states the estimate" grep -q "^mirror mismatch, live estimate: last [0-9]* frames .* %" "$work/path.out"
 
 printf 'time,eye_x,eye_y,eye_z,target_x,target_y,target_z,fov\n0,0,1,5,0,0,0,45\n0.5,2,1,4,0,0,0,45\n' >"$work/path.csv.in"
 mv "$work/path.csv.in" "$work/keys.csv"
@@ -48,6 +50,8 @@ check "it prints a row per session and the aggregate" bash -c "test \$(grep -cE 
 check "its JSON has the aggregate and 3 sessions" bash -c "grep -q '\"fps_per_session_mean\"' '$work/load.json' && test \$(grep -c '\"fps\":' '$work/load.json') -eq 3"
 check "no session failed" grep -q '"errors": 0' "$work/load.json"
 check "it shows live progress" grep -q "specula-load: 1/1 s" "$work/load.err"
+check "its summary states the live accuracy estimate" grep -qE "^accuracy  [1-9][0-9]* frames estimated live: mirror mismatch mean [0-9.]+ %" "$work/load.out"
+check "its JSON has the estimate" grep -q '"mirror_mismatch_worst_high"' "$work/load.json"
 "$bin/specula-load" --url "ws://127.0.0.1:1" --seconds 1 >"$work/ldown.out" 2>&1
 check "specula-load says when the server is unreachable" bash -c "grep -q 'cannot connect to 127.0.0.1:1' '$work/ldown.out'"
 

@@ -20,7 +20,8 @@
     cameraOwned: false,    // true once this page has sent a camera: the scene's camera no longer drives it
     sequence: 0,
     sentAt: new Map(),     // sequence → performance.now() when sent, for input-to-frame latency
-    frame: null,           // the last frame drawn (without its JPEG)
+    frame: null,           // the last frame drawn (without its JPEG), with the newest accuracy estimate
+    accuracy: null,        // the newest live accuracy estimate (AccuracyEstimate)
     framesDrawn: 0,
     frameTimes: [],        // performance.now() of recent frames, for fps
     latencyMs: null,
@@ -73,6 +74,7 @@
       try { message = JSON.parse(event.data); } catch (e) { showStatus(`unreadable message from the server: ${e}`); return; }
       if (message.welcome) onWelcome(message.welcome);
       else if (message.frame) onFrame(message.frame);
+      else if (message.accuracy) onAccuracy(message.accuracy);
       else if (message.error?.code === 'RESUME_REFUSED') showStatus(`Reconnected as a fresh session: ${message.error.message}`, 'info');
       else if (message.error) showStatus(`server: ${message.error.message} (${message.error.code})`);
     };
@@ -251,6 +253,8 @@
 
   // ---- server messages ----
   function onWelcome(welcome) {
+    state.accuracy = null;  // estimates name frames of the previous connection's numbering
+    SpeculaStatistics.reset();
     state.welcome = welcome;
     state.reconnectDelayMs = 500;
     if (state.reconnectAttempt > 0) state.reconnects++;
@@ -313,6 +317,19 @@
       });
   }
 
+  // The newest live accuracy estimate, whether a frame carried it or it came alone for the frame on
+  // screen (a still view); it may arrive while that frame is still being decoded.
+  function noteAccuracy(accuracy) {
+    if (accuracy && (!state.accuracy || Number(accuracy.frame) > Number(state.accuracy.frame))) state.accuracy = accuracy;
+  }
+
+  function onAccuracy(accuracy) {
+    noteAccuracy(accuracy);
+    if (!state.frame) return;
+    state.frame = { ...state.frame, accuracy: state.accuracy };
+    updateOverlay();
+  }
+
   function redraw() {
     if (state.bitmap) context2d.drawImage(state.bitmap, 0, 0, canvas.width, canvas.height);
   }
@@ -328,7 +345,9 @@
     state.frameTimes.push(now);
     while (state.frameTimes.length && now - state.frameTimes[0] > 1000) state.frameTimes.shift();
     const { jpeg, ...described } = frame;
-    state.frame = { ...described, jpegBytes };
+    if (frame.settings) state.accuracy = null;  // the server starts a new window under new settings
+    noteAccuracy(frame.accuracy);
+    state.frame = { ...described, jpegBytes, accuracy: state.accuracy };
     showSettings(frame.settings);  // after a settings change: what the server runs, with what it implied
     state.framesDrawn++;
     if (!scrubbing) $('scrub').value = String(frame.sceneTimeMs % Number($('scrub').max));
@@ -343,7 +362,7 @@
     const searching = $('method')?.value === 'SEARCH';
     SpeculaStatistics.show(overlay, state.frame, {
       fps: state.frameTimes.length, latencyMs: state.latencyMs, methodName: SpeculaSettings.describe('method'),
-      searchName: searching ? optionText('search') : null,
+      searchName: searching ? optionText('search') : null, accuracySamples: Number($('accuracySamples')?.value ?? NaN),
     });
   }
 

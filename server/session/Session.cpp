@@ -436,6 +436,7 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
     if (latestAccuracy_) *frame.mutable_accuracy() = accuracyEstimate(*latestAccuracy_, accuracyWindow_);
+    if (!reencoded) renderedFrame_ = frame.number();
     if (!reencoded && state_.settings.accuracySamples > 0)
       accuracyJob = AccuracyJob{frame.number(), request.job.pose, request.job.samples, state_.settings.accuracySamples,
                                 lastOutput_};
@@ -469,10 +470,18 @@ void Session::accuracyMeasured(std::uint64_t epoch, Result<FrameAccuracy> accura
   }
   metrics.accuracyMismatch.observe(100.0 * accuracy->sample.mismatch.share());
   metrics.accuracyMs.observe(accuracy->milliseconds);
-  std::lock_guard lock(mutex_);
-  if (epoch != settingsEpoch_) return;
-  accuracyWindow_.add(*accuracy);
-  latestAccuracy_ = std::move(*accuracy);
+  v1::ServerMessage message;
+  {
+    std::lock_guard lock(mutex_);
+    if (epoch != settingsEpoch_) return;
+    accuracyWindow_.add(*accuracy);
+    latestAccuracy_ = std::move(*accuracy);
+    // A still view sends no further frame to carry it.
+    const bool onScreen = latestAccuracy_->frame == renderedFrame_ && !busy_ && !dirty_ && !state_.clock.playing();
+    if (!onScreen) return;
+    *message.mutable_accuracy() = accuracyEstimate(*latestAccuracy_, accuracyWindow_);
+  }
+  send(message);
 }
 
 void Session::renderFailed(const FrameRequest&, const std::string& text) {

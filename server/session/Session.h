@@ -94,6 +94,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   Clock::time_point inputArrival_{};
   // Live accuracy: the latest estimate and the window since the settings last changed (a new epoch).
   std::uint64_t settingsEpoch_ = 0;
+  std::uint64_t renderedFrame_ = 0;  // the last frame rendered (a re-encoded frame shows its pixels)
   std::optional<FrameAccuracy> latestAccuracy_;
   AccuracyWindow accuracyWindow_;
   std::uint64_t framesStarted_ = 0, framesDelivered_ = 0, framesSent_ = 0, framesSkipped_ = 0, bytesSent_ = 0;

@@ -252,6 +252,12 @@ try {
   };
   await pressKey('o');  // hide the statistics overlay: compare the frame alone
   check('the O key hides the overlay', await evaluate("document.getElementById('overlay').hidden") === true);
+  // A re-encoded still shows the pixels of the frame before it.
+  const ownEstimate = await stillFrame((f) => f.accuracy &&
+    Number(f.accuracy.frame) === Number(f.number) - (f.reencoded ? 1 : 0), 10000)
+    .catch(() => null);
+  check('a still view gets the live accuracy estimate of the frame on screen', ownEstimate !== null,
+    JSON.stringify(await evaluate('(({ number, reencoded, still, accuracy }) => ({ number, reencoded, still, accuracy }))(window.specula.frame)')));
   const shot = await screenshot('browser-view.png');
   check('the canvas is not blank', greyDeviation(shot) > 10, `grey deviation ${greyDeviation(shot).toFixed(1)}`);
 
@@ -331,7 +337,8 @@ try {
     const closed = await statisticsLayout();
     await saveWholePage(`browser-statistics-${size}-closed.png`);
     check(`${size}: the statistics panel is closed, a one-line summary of fps, render time, size and plan`,
-      !closed.open && closed.summaryLines === 1 && /^\d+ fps · render [\d.]+ ms · \d+×\d+ · \d+ /.test(closed.summary),
+      !closed.open && closed.summaryLines === 1 &&
+      /^\d+ fps · render [\d.]+ ms · mirror error [\d.]+ % \(≤ [\d.]+ %\) · \d+×\d+ · \d+ /.test(closed.summary),
       `${closed.summaryLines} lines: ${closed.summary}`);
     checkClearOfControls(`${size}, closed`, closed);
     await clickAt(closed.summaryCentre);
@@ -339,6 +346,9 @@ try {
     await saveWholePage(`browser-statistics-${size}-open.png`);
     check(`${size}: one click on the summary opens the details`, opened.open && opened.detailsHeight > 0 &&
       /plan: \d+ mirror parts/.test(opened.text), `open ${opened.open}, details ${opened.detailsHeight} px high`);
+    check(`${size}: the details state the live accuracy estimate and plot it against render time`,
+      /accuracy: frame \d+: [\d.]+ % of 256 mirror px wrong \(95 %: [\d.]+ % to [\d.]+ %\)/.test(opened.text) &&
+      await evaluate("!!document.querySelector('#overlay .accuracy-plot')"), opened.text);
     check(`${size}: the open details fit the panel's width (no sideways scrolling)`, opened.scrollWidth <= opened.clientWidth,
       `content ${opened.scrollWidth} px wide in ${opened.clientWidth} px`);
     checkClearOfControls(`${size}, open`, opened);

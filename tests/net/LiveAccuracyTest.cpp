@@ -52,6 +52,25 @@ TEST(LiveAccuracy, FramesCarryTheEstimateOfAnEarlierFramePooledOverAWindow) {
   EXPECT_NE(metrics.body.find("specula_accuracy_milliseconds_count"), std::string::npos);
 }
 
+TEST(LiveAccuracy, AStillViewGetsTheEstimateOfTheFrameOnScreenWithoutNewInput) {
+  ServerRig rig;
+  auto client = rig.connect();
+  ASSERT_TRUE(client);
+  greet(*client, 160, 120);
+  ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
+  std::uint64_t lastRendered = 0;
+  std::optional<v1::AccuracyEstimate> own;
+  const auto deadline = std::chrono::steady_clock::now() + 5s;
+  while (!own && std::chrono::steady_clock::now() < deadline) {
+    auto message = client->receive(200ms);
+    if (!message) continue;
+    if (message->has_frame() && !message->frame().reencoded()) lastRendered = message->frame().number();
+    if (message->has_accuracy() && message->accuracy().frame() == lastRendered) own = message->accuracy();
+  }
+  ASSERT_TRUE(own) << "the last frame rendered, " << lastRendered << ", got no estimate of its own";
+  EXPECT_EQ(own->sampled(), 256u);
+}
+
 TEST(LiveAccuracy, ZeroSamplesTurnItOffAndValuesOutOfRangeAreRefusedByName) {
   ServerRig rig;
   auto client = rig.connect(protocol::Encoding::Json);

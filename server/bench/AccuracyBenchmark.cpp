@@ -1,12 +1,15 @@
 #include "bench/AccuracyBenchmark.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/ImageComparison.h"
 #include "bench/ReflectionAccuracy.h"
 #include "bench/TessellationBenchmark.h"
+#include "reference/MismatchSample.h"
+#include "reference/PixelTracer.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "scene/Primitives.h"
@@ -174,6 +177,9 @@ namespace {
 struct References {
   std::vector<reference::ReferenceImage> images;
   double medianMilliseconds = 0.0;
+  // Each pose's geometry, for the live estimate's pixel tracers.
+  std::unique_ptr<reference::RayTracer> tracer;
+  std::vector<std::shared_ptr<const reference::PosedScene>> posed;
 };
 
 Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& scene,
@@ -190,21 +196,49 @@ Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& sc
     if (!truth) return Error{truth.error()};
     times.push_back(truth->milliseconds);
     references.images.push_back(std::move(*truth));
+    auto posed = (*tracer)->posedScene(path[i]);
+    if (!posed) return Error{posed.error()};
+    references.posed.push_back(std::move(*posed));
   }
   references.medianMilliseconds = median(times);
+  references.tracer = std::move(*tracer);
   return references;
 }
 
 // One setting along the path, compared with `truths`.
+// The live accuracy estimate of `frame` at path pose `pose`: whether its interval holds `truth`, and its time.
+struct LiveEstimate {
+  double mismatch = 0.0;
+  bool covers = false;
+  double milliseconds = 0.0;
+};
+
+Result<LiveEstimate> estimateLive(const References& references, const scene::ScenePose& pose, std::size_t index,
+                                  const render::RenderedFrame& frame, double truth) {
+  const auto start = std::chrono::steady_clock::now();
+  auto tracer = references.tracer->pixelTracer(references.posed[index], pose.camera,
+                                               {frame.width, frame.height, 1, 0, frame.samples});
+  if (!tracer) return Error{tracer.error()};
+  reference::MismatchSampleOptions sampling;
+  sampling.seed = index;
+  auto sample = reference::sampleMirrorMismatch(**tracer, {frame.rgba, frame.width, frame.height}, sampling);
+  if (!sample) return Error{sample.error()};
+  const reference::ShareEstimate& e = sample->mismatch;
+  return LiveEstimate{e.share(), e.low <= truth && truth <= e.high,
+                      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()};
+}
+
 Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene::ScenePose>& path,
-                                   const std::vector<reference::ReferenceImage>& truths,
-                                   const AccuracyBenchOptions& options, const AccuracySetting& setting) {
+                                   const References& references, const AccuracyBenchOptions& options,
+                                   const AccuracySetting& setting) {
+  const std::vector<reference::ReferenceImage>& truths = references.images;
   const ReflectionMethod method = setting.settings.method;
   const bool measurePoints = hasExactMirror(r.scene()) && method == ReflectionMethod::Search;
   // Warm-up at the first pose: buffer sizes, shader caches, coherence seeds.
   if (auto warm = r.render(path.front(), options.width, options.height, setting.settings); !warm)
     return Error{setting.name + ": " + warm.error()};
-  std::vector<double> times, psnrs, ssims, mismatches;
+  std::vector<double> times, psnrs, ssims, mismatches, estimates, estimateTimes;
+  std::size_t covered = 0;
   std::vector<std::uint64_t> drawn, searched;
   ReflectionPointErrors points;
   for (std::size_t i = 0; i < path.size(); ++i) {
@@ -216,6 +250,11 @@ Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene:
     psnrs.push_back(comparison->psnr);
     ssims.push_back(comparison->ssim);
     mismatches.push_back(comparison->mirrorMismatch);
+    auto live = estimateLive(references, path[i], i, *frame, comparison->mirrorMismatch);
+    if (!live) return Error{setting.name + ": the live estimate: " + live.error()};
+    estimates.push_back(live->mismatch);
+    estimateTimes.push_back(live->milliseconds);
+    covered += live->covers ? 1 : 0;
     // A frame that searched nothing ray-cast its mirrors: no virtual triangles, no reflection points.
     const bool searchedAny = frame->search.searched > 0;
     drawn.push_back(method == ReflectionMethod::Search && !searchedAny ? 0
@@ -231,6 +270,9 @@ Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene:
   row.psnr = mean(psnrs);
   row.ssim = mean(ssims);
   row.mirrorMismatch = mean(mismatches);
+  row.estimateMean = mean(estimates);
+  row.estimateCoverage = static_cast<double>(covered) / static_cast<double>(path.size());
+  row.estimateMilliseconds = median(estimateTimes);
   if (!points.pixels.empty()) {
     row.pointErrorP99 = points.percentile(0.99);
     row.pointErrorMax = points.percentile(1.0);
@@ -273,9 +315,9 @@ Result<std::vector<AccuracyRow>> benchmarkAccuracy(gl::GlContext& context, std::
       if (!truths) return Error{setting.name + ": " + truths.error()};
       auto variantRenderer = render::Renderer::create(context, variant);
       if (!variantRenderer) return Error{setting.name + ": " + variantRenderer.error()};
-      row = measureSetting(**variantRenderer, path, truths->images, options, setting);
+      row = measureSetting(**variantRenderer, path, *truths, options, setting);
     } else {
-      row = measureSetting(**renderer, path, references->images, options, setting);
+      row = measureSetting(**renderer, path, *references, options, setting);
     }
     if (!row) return Error{row.error()};
     rows.push_back(std::move(*row));

@@ -84,6 +84,10 @@ check "the quad's analytic sphere gets a reflection-point error" awk -v e="$(ava
 check "ray-casting every mirror matches the ray tracer" awk -v m="$(avalue 'ray-cast every mirror' mirror_mismatch)" 'BEGIN { exit !(m != "" && m < 0.005) }'
 check "... and searches nothing, so has no reflection points" test -z "$(avalue 'ray-cast every mirror' point_error_p99_px)"
 check "the environment map has no reflection points to measure" test -z "$(avalue 'environment map 256 px' point_error_p99_px)"
+check "the live estimate sits beside the full comparison and tracks it" awk -v e="$(avalue 'environment map 256 px' estimate_mean)" \
+  -v m="$(avalue 'environment map 256 px' mirror_mismatch)" 'BEGIN { exit !(m > 0.05 && e > m - 0.05 && e < m + 0.05) }'
+check "... with its interval's coverage and cost on every setting" bash -c \
+  "sed 's/\"[^\"]*\"/quoted/g' '$work/acc/accuracy.csv' | awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) at[\$i] = i } NR > 2 && (\$at[\"estimate_coverage\"] == \"\" || \$at[\"estimate_ms\"] <= 0) { exit 1 }'"
 check "some setting is on the Pareto front" grep -q ',true$' "$work/acc/accuracy.csv"
 check "the reference is never on it" grep -q '^quad,ray-traced reference,reference,.*,false$' "$work/acc/accuracy.csv"
 check "the Markdown table is printed" contains "$output" '^| ray-traced reference |'

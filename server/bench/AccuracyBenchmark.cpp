@@ -1,15 +1,12 @@
 #include "bench/AccuracyBenchmark.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/ImageComparison.h"
 #include "bench/ReflectionAccuracy.h"
 #include "bench/TessellationBenchmark.h"
-#include "reference/MismatchSample.h"
-#include "reference/PixelTracer.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
 #include "scene/Primitives.h"
@@ -206,28 +203,6 @@ Result<References> traceReferences(const std::shared_ptr<const scene::Scene>& sc
 }
 
 // One setting along the path, compared with `truths`.
-// The live accuracy estimate of `frame` at path pose `pose`: whether its interval holds `truth`, and its time.
-struct LiveEstimate {
-  double mismatch = 0.0;
-  bool covers = false;
-  double milliseconds = 0.0;
-};
-
-Result<LiveEstimate> estimateLive(const References& references, const scene::ScenePose& pose, std::size_t index,
-                                  const render::RenderedFrame& frame, double truth) {
-  const auto start = std::chrono::steady_clock::now();
-  auto tracer = references.tracer->pixelTracer(references.posed[index], pose.camera,
-                                               {frame.width, frame.height, 1, 0, frame.samples});
-  if (!tracer) return Error{tracer.error()};
-  reference::MismatchSampleOptions sampling;
-  sampling.seed = index;
-  auto sample = reference::sampleMirrorMismatch(**tracer, {frame.rgba, frame.width, frame.height}, sampling);
-  if (!sample) return Error{sample.error()};
-  const reference::ShareEstimate& e = sample->mismatch;
-  return LiveEstimate{e.share(), e.low <= truth && truth <= e.high,
-                      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()};
-}
-
 Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene::ScenePose>& path,
                                    const References& references, const AccuracyBenchOptions& options,
                                    const AccuracySetting& setting) {
@@ -250,11 +225,12 @@ Result<AccuracyRow> measureSetting(render::Renderer& r, const std::vector<scene:
     psnrs.push_back(comparison->psnr);
     ssims.push_back(comparison->ssim);
     mismatches.push_back(comparison->mirrorMismatch);
-    auto live = estimateLive(references, path[i], i, *frame, comparison->mirrorMismatch);
+    auto live = sampleAgainstReference(*references.tracer, references.posed[i], path[i].camera, *frame, i);
     if (!live) return Error{setting.name + ": the live estimate: " + live.error()};
-    estimates.push_back(live->mismatch);
+    const reference::ShareEstimate& estimate = live->sample.mismatch;
+    estimates.push_back(estimate.share());
     estimateTimes.push_back(live->milliseconds);
-    covered += live->covers ? 1 : 0;
+    covered += estimate.low <= comparison->mirrorMismatch && comparison->mirrorMismatch <= estimate.high ? 1 : 0;
     // A frame that searched nothing ray-cast its mirrors: no virtual triangles, no reflection points.
     const bool searchedAny = frame->search.searched > 0;
     drawn.push_back(method == ReflectionMethod::Search && !searchedAny ? 0

@@ -1,6 +1,9 @@
 #include "bench/ImageComparison.h"
 
 #include <algorithm>
+#include <chrono>
+
+#include "reference/PixelTracer.h"
 
 #include "reference/ImageMetrics.h"
 
@@ -21,6 +24,21 @@ Result<ImageComparison> compareWithReference(const render::RenderedFrame& frame,
   if (!ssim) return Error{ssim.error()};
   if (!mismatch) return Error{mismatch.error()};
   return ImageComparison{std::min(*psnr, kPsnrCeiling), *ssim, mismatch->share()};
+}
+
+Result<SampledComparison> sampleAgainstReference(const reference::RayTracer& tracer,
+                                                 std::shared_ptr<const reference::PosedScene> posed,
+                                                 const math::Camera& camera, const render::RenderedFrame& frame,
+                                                 std::uint64_t seed) {
+  const auto start = std::chrono::steady_clock::now();
+  auto pixels = tracer.pixelTracer(std::move(posed), camera, {frame.width, frame.height, 1, 0, frame.samples});
+  if (!pixels) return Error{pixels.error()};
+  reference::MismatchSampleOptions options;
+  options.seed = seed;
+  auto sample = reference::sampleMirrorMismatch(**pixels, {frame.rgba, frame.width, frame.height}, options);
+  if (!sample) return Error{sample.error()};
+  return SampledComparison{*sample,
+                           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()};
 }
 
 double median(std::vector<double> values) {

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "base/Result.h"
+#include "reference/MismatchSample.h"
 #include "reference/RayTracer.h"
 #include "render/Renderer.h"
 
@@ -15,6 +16,17 @@ struct ImageComparison {
 
 Result<ImageComparison> compareWithReference(const render::RenderedFrame& frame,
                                              const reference::ReferenceImage& truth);
+
+// The live accuracy estimate of `frame` (reference::sampleMirrorMismatch with its defaults and `seed`),
+// traced from `posed`, the geometry of the frame's pose, and the CPU time it took.
+struct SampledComparison {
+  reference::MismatchSample sample;
+  double milliseconds = 0.0;
+};
+Result<SampledComparison> sampleAgainstReference(const reference::RayTracer& tracer,
+                                                 std::shared_ptr<const reference::PosedScene> posed,
+                                                 const math::Camera& camera, const render::RenderedFrame& frame,
+                                                 std::uint64_t seed);
 
 double median(std::vector<double> values);
 

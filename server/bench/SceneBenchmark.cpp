@@ -72,12 +72,18 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
   if (!truth) return Error{truth.error()};
   auto comparison = bench::compareWithReference(*still, *truth);
   if (!comparison) return Error{comparison.error()};
+  auto posed = (*tracer)->posedScene(pose);
+  if (!posed) return Error{posed.error()};
+  auto estimate = sampleAgainstReference(**tracer, std::move(*posed), pose.camera, *still, 0);
+  if (!estimate) return Error{"the live estimate: " + estimate.error()};
   return SceneBenchResult::ReferenceComparison{comparison->psnr,
                                                comparison->ssim,
                                                comparison->mirrorMismatch,
                                                options.stillSamples,
                                                options.stillSamples == 1 ? truth->milliseconds : single->milliseconds,
-                                               truth->milliseconds};
+                                               truth->milliseconds,
+                                               estimate->sample.mismatch,
+                                               estimate->milliseconds};
 }
 
 // The last pose as a still frame at each of kStillSampleCounts, median over a few frames.

@@ -10,6 +10,7 @@
 #include "base/Result.h"
 #include "gl/GlContext.h"
 #include "math/SamplePattern.h"
+#include "reference/MismatchSample.h"
 #include "passes/FramePlan.h"
 #include "passes/ReflectionSettings.h"
 #include "render/FrameTimings.h"
@@ -97,6 +98,9 @@ struct SceneBenchResult {
     int samples = 1;                // the images compared took this many samples a pixel (BenchOptions::stillSamples)
     double rayTraceMilliseconds = 0.0;       // one ray a pixel, as the warm frames' one sample
     double stillRayTraceMilliseconds = 0.0;  // `samples` rays a pixel, the image compared
+    // What a stream would report for that frame: the live estimate from 256 sampled mirror pixels.
+    reference::ShareEstimate mismatchEstimate;
+    double estimateMilliseconds = 0.0;
   };
   std::optional<ReferenceComparison> reference;
 

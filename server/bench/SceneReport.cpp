@@ -105,6 +105,10 @@ ReportRow sceneRow(const SceneBenchResult& r, std::span<const std::string> stage
   cells.push_back({"psnr_db", c ? number(c->psnr, 2) : ""});
   cells.push_back({"ssim", c ? number(c->ssim, 4) : ""});
   cells.push_back({"mirror_mismatch", c ? number(c->mirrorMismatch, 4) : ""});
+  cells.push_back({"mismatch_estimate", c ? number(c->mismatchEstimate.share(), 4) : ""});
+  cells.push_back({"mismatch_estimate_low", c ? number(c->mismatchEstimate.low, 4) : ""});
+  cells.push_back({"mismatch_estimate_high", c ? number(c->mismatchEstimate.high, 4) : ""});
+  cells.push_back({"estimate_ms", c ? number(c->estimateMilliseconds, 2) : ""});
   cells.push_back({"image_samples", c ? std::to_string(c->samples) : ""});
   cells.push_back({"raytrace_still_ms", c ? number(c->stillRayTraceMilliseconds, 1) : ""});
   cells.push_back({"raytrace_ms", c ? number(c->rayTraceMilliseconds, 1) : ""});
@@ -132,9 +136,9 @@ std::string formatJson(std::span<const SceneBenchResult> results) {
 std::string formatTable(std::span<const SceneBenchResult> results) {
   std::string table;
   char line[512];
-  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", "scene", "frame ms",
-                "fps", "first", "floor", "steps warm/cold/L", "point error mean/p99/max", "PSNR/SSIM/mismatch",
-                "trace ms", "x trace");
+  std::snprintf(line, sizeof line, "%-16s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %-21s | %8s %8s\n", "scene",
+                "frame ms", "fps", "first", "floor", "steps warm/cold/L", "point error mean/p99/max",
+                "PSNR/SSIM/mismatch", "live estimate [95 %]", "trace ms", "x trace");
   table += line;
   for (const SceneBenchResult& r : results) {
     const auto& e = r.pointError;
@@ -145,10 +149,14 @@ std::string formatTable(std::span<const SceneBenchResult> results) {
         e ? significant(e->mean) + "/" + significant(e->p99) + "/" + significant(e->maximum) : "-";
     const std::string image =
         c ? number(c->psnr, 1) + "/" + number(c->ssim, 3) + "/" + number(c->mirrorMismatch, 3) : "-";
-    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %8s %8s\n", r.scene.c_str(),
-                  number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
+    const std::string estimate = c ? number(c->mismatchEstimate.share(), 3) + " [" +
+                                         number(c->mismatchEstimate.low, 3) + ", " +
+                                         number(c->mismatchEstimate.high, 3) + "]"
+                                   : "-";
+    std::snprintf(line, sizeof line, "%-16.40s %8s %7s %6s %6s | %-17s | %-26s | %-20s | %-21s | %8s %8s\n",
+                  r.scene.c_str(), number(r.frameMedianMilliseconds, 1).c_str(), number(r.framesPerSecond(), 1).c_str(),
                   number(r.firstFrameMilliseconds, 0).c_str(), number(r.rasterFloorMilliseconds, 1).c_str(),
-                  steps.c_str(), error.c_str(), image.c_str(),
+                  steps.c_str(), error.c_str(), image.c_str(), estimate.c_str(),
                   orDash(c ? number(c->rayTraceMilliseconds, 0) : "").c_str(),
                   orDash(optionalNumber(r.timeVersusRayTrace(), 2)).c_str());
     table += line;

@@ -28,7 +28,8 @@ bench::SceneBenchResult measured(const std::string& name) {
   r.warmSteps = {1.5, 4, 100};
   r.coldSteps = {16.0, 22, 100};
   r.pointError = bench::SceneBenchResult::PointError{10, 0.01, 0.5, 1.25, 1, 0};
-  r.reference = bench::SceneBenchResult::ReferenceComparison{20.5, 0.95, 0.1, 4, 44.0, 170.0};
+  r.reference = bench::SceneBenchResult::ReferenceComparison{
+      20.5, 0.95, 0.1, 4, 44.0, 170.0, reference::wilsonInterval(26, 256), 3.5};
   r.stillFrames = {{1, 21.0}, {4, 80.5}, {8, 161.0}};
   return r;
 }
@@ -57,7 +58,13 @@ TEST(BenchReport, CsvHasOneColumnSetAndEmptyCellsWhereNothingWasMeasured) {
   EXPECT_NE(rows[0].find(",fps,raster_floor_ms,"), std::string::npos);
   EXPECT_NE(rows[1].find(",50.0,7.25,"), std::string::npos) << "fps = 1000 / 20 ms, then the floor: " << rows[1];
   EXPECT_NE(rows[1].find(",0.5,1.25,"), std::string::npos) << rows[1];
-  EXPECT_EQ(rows[2].substr(rows[2].size() - 7), ",,,,,,,") << "no reference: seven empty cells at the end";
+  EXPECT_EQ(rows[2].substr(rows[2].size() - 11), ",,,,,,,,,,,") << "no reference: eleven empty cells at the end";
+  // 26 of 256 sampled mirror pixels wrong: 0.1016, Wilson's 95 % interval [0.0703, 0.1447], traced in 3.5 ms.
+  EXPECT_NE(
+      rows[0].find(",mirror_mismatch,mismatch_estimate,mismatch_estimate_low,mismatch_estimate_high,estimate_ms,"),
+      std::string::npos)
+      << rows[0];
+  EXPECT_NE(rows[1].find(",0.1000,0.1016,0.0703,0.1447,3.50,"), std::string::npos) << rows[1];
 }
 
 TEST(BenchReport, FrameTimeIsAlsoGivenAsAMultipleOfTheRayTracers) {

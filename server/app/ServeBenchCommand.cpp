@@ -137,12 +137,13 @@ int runServeBench(std::span<const std::string> arguments) {
   std::string csv =
       "scene,sessions,width,height,seconds,fps_per_session_mean,fps_per_session_min,latency_ms_p50,"
       "latency_ms_p99,two_frame_intervals_ms,render_ms_mean,encode_ms_mean,bytes_per_frame,"
-      "skipped_frames,errors,instances,sessions_per_instance\n";
+      "skipped_frames,errors,estimated_frames,mirror_mismatch_estimate_mean,accuracy_ms_mean,instances,"
+      "sessions_per_instance\n";
   std::string json =
       "{\"scene\": \"" + (*scene)->name + "\", \"instances\": " + std::to_string(*instances) + ", \"runs\": [\n";
   std::string table =
       "sessions  size       fps/session (min)  latency p50   p99 ms  2 intervals  render ms  encode ms  KB/frame  "
-      "skipped  errors" +
+      "skipped  errors  estimated  mismatch est.  estimate ms" +
       std::string(cluster ? "  sessions per instance" : "") + "\n";
   const std::size_t total = sessionCounts->size() * sizes->size() + (cluster ? 1 : 0);
   std::size_t done = 0;
@@ -177,20 +178,28 @@ int runServeBench(std::span<const std::string> arguments) {
       const client::LoadReport report =
           run(sessions, width, height, cluster ? Events{{0.5, [&] { perInstance = spread(); }}} : Events{});
       const double twoIntervals = report.fpsMean > 0.0 ? 2000.0 / report.fpsMean : 0.0;
+      // Frames whose live accuracy estimate arrived: the sampler takes the newest frame of a session when free.
+      const double estimatedShare =
+          report.frames ? 100.0 * static_cast<double>(report.estimatedFrames) / static_cast<double>(report.frames)
+                        : 0.0;
       char row[512];
-      std::snprintf(row, sizeof row,
-                    "%8d  %4dx%-4d  %8.1f (%5.1f)     %8.1f  %8.1f  %11.1f  %9.1f  %9.2f  %8.1f  %7llu  %6llu  %s\n",
-                    sessions, width, height, report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99,
-                    twoIntervals, report.renderMsMean, report.encodeMsMean, report.bytesPerFrame / 1024.0,
-                    static_cast<unsigned long long>(report.skippedFrames),
-                    static_cast<unsigned long long>(report.errors), perInstance.c_str());
+      std::snprintf(
+          row, sizeof row,
+          "%8d  %4dx%-4d  %8.1f (%5.1f)     %8.1f  %8.1f  %11.1f  %9.1f  %9.2f  %8.1f  %7llu  %6llu  %8.0f%%  "
+          "%11.2f %%  %11.2f  %s\n",
+          sessions, width, height, report.fpsMean, report.fpsMin, report.latencyP50, report.latencyP99, twoIntervals,
+          report.renderMsMean, report.encodeMsMean, report.bytesPerFrame / 1024.0,
+          static_cast<unsigned long long>(report.skippedFrames), static_cast<unsigned long long>(report.errors),
+          estimatedShare, 100.0 * report.mismatchMean, report.accuracyMsMean, perInstance.c_str());
       table += row;
       csv += (*scene)->name + "," + std::to_string(sessions) + "," + std::to_string(width) + "," +
              std::to_string(height) + "," + number(report.seconds, 1) + "," + number(report.fpsMean, 2) + "," +
              number(report.fpsMin, 2) + "," + number(report.latencyP50, 2) + "," + number(report.latencyP99, 2) + "," +
              number(twoIntervals, 2) + "," + number(report.renderMsMean, 2) + "," + number(report.encodeMsMean, 2) +
              "," + number(report.bytesPerFrame, 0) + "," + std::to_string(report.skippedFrames) + "," +
-             std::to_string(report.errors) + "," + std::to_string(*instances) + "," + perInstance + "\n";
+             std::to_string(report.errors) + "," + std::to_string(report.estimatedFrames) + "," +
+             number(report.mismatchMean, 4) + "," + number(report.accuracyMsMean, 2) + "," +
+             std::to_string(*instances) + "," + perInstance + "\n";
       json += std::string(done > 1 ? ",\n" : "") + client::loadReportJson(report);
     }
   }

@@ -113,6 +113,8 @@ int runServe(std::span<const std::string> arguments) {
         drainSeconds ? Status{} : Error{drainSeconds.error()}, resumeSecret ? Status{} : Error{resumeSecret.error()}})
     if (!status) return fail(status.error());
   if (!(*maxFps > 0.0 && *maxFps <= 1000.0)) return fail("--max-fps expects a number in (0, 1000]");
+  if (sessionDefaults.accuracyTarget > 0.0f && sessionDefaults.accuracySamples == 0)
+    return fail("--accuracy-target needs the live estimate: drop --accuracy-samples 0, or the target");
   if (auto backend = parseGlOption(options.text("gl")); !backend) return fail(backend.error());
 
   net::ServerOptions serverOptions;

@@ -47,6 +47,7 @@ std::string checkViewport(std::uint32_t width, std::uint32_t height, const HubOp
 Session::Session(SessionHub& hub, std::shared_ptr<net::MessageSink> sink, protocol::Encoding encoding)
     : hub_(hub), encoding_(encoding), id_(randomToken()), number_(nextSessionNumber++), sink_(std::move(sink)) {
   state_.settings = hub.options().defaults;
+  configureAccuracyControl();
 }
 
 void Session::send(const v1::ServerMessage& message) {
@@ -172,6 +173,7 @@ void Session::onHello(const v1::Hello& hello, Clock::time_point now) {
     std::lock_guard lock(mutex_);
     if (restored) {
       state_ = std::move(*restored);
+      configureAccuracyControl();
       if (state_.playOnResume) state_.clock.play(now);
     } else if (hub_.scene().moves()) {
       state_.clock.play(now);  // a moving scene moves from the start
@@ -304,13 +306,30 @@ Status Session::applySettings(const v1::RenderSettings& update) {
   std::lock_guard lock(mutex_);
   const SessionSettings before = state_.settings;
   Status applied = applySettingsUpdate(update, state_.settings);
+  if (applied && state_.settings.accuracyTarget > 0.0f && state_.settings.accuracySamples == 0) {
+    state_.settings = before;
+    return Error{
+        "settings: accuracy_target needs the live estimate: set accuracy_samples above 0, or "
+        "accuracy_target to -1 (off)"};
+  }
   settingsChanged_ = settingsChanged_ || applied;
   if (applied && !(state_.settings == before)) {  // estimates of frames rendered before judge other settings
-    ++settingsEpoch_;
-    latestAccuracy_.reset();
-    accuracyWindow_.clear();
+    restartAccuracyWindow();
+    configureAccuracyControl();
   }
   return applied;
+}
+
+void Session::configureAccuracyControl() {
+  if (state_.settings.accuracyTarget > 0.0f && state_.settings.accuracySamples > 0)
+    accuracyControl_.emplace(accuracyLadder(state_.settings.reflection), state_.settings.accuracyTarget / 100.0);
+  else accuracyControl_.reset();
+}
+
+void Session::restartAccuracyWindow() {
+  ++settingsEpoch_;
+  latestAccuracy_.reset();
+  accuracyWindow_.clear();
 }
 
 Status Session::applyResize(const v1::Resize& resize) {
@@ -360,6 +379,10 @@ FrameRequest Session::takeFrame(Clock::time_point now) {
   if (state_.camera) request.job.pose.camera = *state_.camera;
   std::tie(request.job.width, request.job.height) = state_.renderSize();
   request.job.settings = state_.settings.reflection;
+  if (accuracyControl_) {
+    request.job.settings = accuracyControl_->current().settings;
+    request.accuracyRung = accuracyControl_->rung();
+  }
   request.job.samples = request.still ? state_.settings.stillSamples : state_.settings.interactiveSamples;
   if (request.still && lastOutput_ && lastJob_ == request.job) request.reuse = lastOutput_;
   dirty_ = false;
@@ -436,6 +459,14 @@ void Session::deliver(const FrameRequest& request, std::shared_ptr<const RenderO
     frame.set_number(++framesDelivered_);
     frame.set_skipped_frames(framesSkipped_);
     if (latestAccuracy_) *frame.mutable_accuracy() = accuracyEstimate(*latestAccuracy_, accuracyWindow_);
+    if (accuracyControl_) {
+      if (request.accuracyRung && !reencoded) accuracyControl_->frameRendered(*request.accuracyRung, output.renderMs);
+      v1::AccuracyControl& control = *frame.mutable_accuracy_control();
+      control.set_target(100.0f * static_cast<float>(accuracyControl_->target()));
+      control.set_setting(accuracyControl_->current().name);
+      control.set_reason(accuracyControl_->reason());
+      control.set_met(accuracyControl_->met());
+    }
     if (!reencoded) renderedFrame_ = frame.number();
     if (!reencoded && state_.settings.accuracySamples > 0)
       accuracyJob = AccuracyJob{frame.number(), request.job.pose, request.job.samples, state_.settings.accuracySamples,
@@ -471,17 +502,25 @@ void Session::accuracyMeasured(std::uint64_t epoch, Result<FrameAccuracy> accura
   metrics.accuracyMismatch.observe(100.0 * accuracy->sample.mismatch.share());
   metrics.accuracyMs.observe(accuracy->milliseconds);
   v1::ServerMessage message;
+  bool rendersAgain = false;
   {
     std::lock_guard lock(mutex_);
     if (epoch != settingsEpoch_) return;
     accuracyWindow_.add(*accuracy);
     latestAccuracy_ = std::move(*accuracy);
+    if (accuracyControl_ &&
+        accuracyControl_->windowMeasured(accuracyWindow_.pooled(), accuracyWindow_.frames(), framesDelivered_)) {
+      restartAccuracyWindow();  // another setting: its own window, and a frame of it
+      dirty_ = true;
+      rendersAgain = true;
+    }
     // A still view sends no further frame to carry it.
-    const bool onScreen = latestAccuracy_->frame == renderedFrame_ && !busy_ && !dirty_ && !state_.clock.playing();
-    if (!onScreen) return;
-    *message.mutable_accuracy() = accuracyEstimate(*latestAccuracy_, accuracyWindow_);
+    const bool onScreen = !rendersAgain && latestAccuracy_ && latestAccuracy_->frame == renderedFrame_ && !busy_ &&
+                          !dirty_ && !state_.clock.playing();
+    if (onScreen) *message.mutable_accuracy() = accuracyEstimate(*latestAccuracy_, accuracyWindow_);
   }
-  send(message);
+  if (rendersAgain) hub_.wakeScheduler();
+  if (message.has_accuracy()) send(message);
 }
 
 void Session::renderFailed(const FrameRequest&, const std::string& text) {

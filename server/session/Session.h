@@ -9,6 +9,7 @@
 
 #include "WireEncoding.h"
 #include "net/Connection.h"
+#include "session/AccuracyController.h"
 #include "session/AccuracySampler.h"
 #include "session/FrameRenderer.h"
 #include "session/SessionState.h"
@@ -29,6 +30,7 @@ struct FrameRequest {
   // Set on a still frame whose job is the last one rendered (a paused view after input): the
   // picture is that render's, only encoded again at still quality.
   std::shared_ptr<const RenderOutput> reuse;
+  std::optional<std::size_t> accuracyRung;  // the accuracy target's setting rendered, when one is set
 };
 
 class Session : public net::ConnectionHandler, public std::enable_shared_from_this<Session> {
@@ -64,6 +66,8 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   Status applyAnimation(const v1::AnimationControl& animation, Clock::time_point now);
   Status applySettings(const v1::RenderSettings& settings);
   Status applyResize(const v1::Resize& resize);
+  void restartAccuracyWindow();     // state_ locked
+  void configureAccuracyControl();  // state_ locked: from the settings' accuracy target
   void noteInput(std::uint64_t sequence, double clientTimeMs, Clock::time_point now);  // state_ locked
   v1::Welcome welcome(bool resumed, Clock::time_point now) const;                      // state_ locked
   void send(const v1::ServerMessage& message);
@@ -97,6 +101,7 @@ class Session : public net::ConnectionHandler, public std::enable_shared_from_th
   std::uint64_t renderedFrame_ = 0;  // the last frame rendered (a re-encoded frame shows its pixels)
   std::optional<FrameAccuracy> latestAccuracy_;
   AccuracyWindow accuracyWindow_;
+  std::optional<AccuracyController> accuracyControl_;  // with an accuracy target
   std::uint64_t framesStarted_ = 0, framesDelivered_ = 0, framesSent_ = 0, framesSkipped_ = 0, bytesSent_ = 0;
 };
 

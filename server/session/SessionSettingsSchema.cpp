@@ -61,6 +61,13 @@ std::vector<SessionSetting> declareSettings() {
                              "mirror pixels of each frame the reference ray tracer traces for the live accuracy "
                              "estimate (0: no estimate)",
                              0, reference::kMaxAccuracySamples, &SessionSettings::accuracySamples));
+  settings.push_back({numberSetting(kStreamGroup, SettingType::Number, "accuracy-target", "P",
+                                    "percent of mirror pixels allowed wrong: each frame renders the cheapest setting "
+                                    "whose live estimate stays under it (0: the reflection settings as given; needs "
+                                    "accuracy-samples)",
+                                    0.0, 100.0, "accuracy_target"),
+                      [](const SessionSettings& s) { return static_cast<double>(s.accuracyTarget); },
+                      [](SessionSettings& s, double value) { s.accuracyTarget = static_cast<float>(value); }});
   return settings;
 }
 

@@ -23,6 +23,9 @@ struct SessionSettings {
   int interactiveSamples = 1;                   // and of frames sent while input keeps arriving
   // Mirror pixels a frame the live accuracy estimate traces exactly (AccuracySampler); 0: none.
   int accuracySamples = reference::kDefaultAccuracySamples;
+  // Percent of mirror pixels: render the cheapest setting whose live estimate stays under it
+  // (AccuracyController); 0: render the reflection settings as given.
+  float accuracyTarget = 0.0f;
 
   bool operator==(const SessionSettings&) const = default;
 };

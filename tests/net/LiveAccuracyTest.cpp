@@ -94,6 +94,33 @@ TEST(LiveAccuracy, ZeroSamplesTurnItOffAndValuesOutOfRangeAreRefusedByName) {
   EXPECT_FALSE(frameWithEstimate(*client, sequence, 10)) << "off: no frame carries an estimate";
 }
 
+TEST(LiveAccuracy, ATargetNoSettingMeetsEndsOnTheMostAccurateAndSaysSo) {
+  ServerRig rig;
+  auto client = rig.connect(protocol::Encoding::Json);
+  ASSERT_TRUE(client);
+  greet(*client, 160, 120);
+  for (const char* bad : {R"({"settings":{"accuracyTarget":150}})", R"({"settings":{"accuracyTarget":-3}})",
+                          R"({"settings":{"accuracyTarget":1,"accuracySamples":-1}})"}) {
+    ASSERT_TRUE(client->sendRaw(bad, true).ok());
+    auto error = receiveUntil(*client, [](const v1::ServerMessage& m) { return m.has_error(); });
+    ASSERT_TRUE(error) << bad;
+    EXPECT_EQ(error->error().code(), v1::Error::BAD_VALUE) << bad;
+    EXPECT_NE(error->error().message().find("accuracy_"), std::string::npos) << error->error().message();
+  }
+  // The fake renderer's grey frames are wrong whatever is asked: even the exact setting misses 0.5 %.
+  ASSERT_TRUE(client->sendRaw(R"({"settings":{"accuracyTarget":0.5}})", true).ok());
+  std::uint64_t sequence = 0;
+  std::optional<v1::Frame> reported;
+  for (int i = 0; i < 20 && !(reported && reported->has_accuracy_control() && !reported->accuracy_control().met()); ++i)
+    reported = frameWithEstimate(*client, sequence);
+  ASSERT_TRUE(reported && reported->has_accuracy_control());
+  const v1::AccuracyControl& control = reported->accuracy_control();
+  EXPECT_FLOAT_EQ(control.target(), 0.5f);
+  EXPECT_EQ(control.setting(), "every mirror ray-cast");
+  EXPECT_FALSE(control.met());
+  EXPECT_NE(control.reason().find("no setting meets 0.50 %"), std::string::npos) << control.reason();
+}
+
 TEST(LiveAccuracy, SessionsClosingWhileTheirFramesAreTracedLeaveNothingBehind) {
   ServerRig rig;
   for (int i = 0; i < 20; ++i) {

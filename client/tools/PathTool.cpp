@@ -39,14 +39,16 @@ v1::ClientMessage animationMessage(v1::AnimationControl::Action action, double t
   return message;
 }
 
-// The live accuracy estimate's columns: empty until the server has sent one (or with it off).
+// The live accuracy estimate's columns, empty until the server has sent one (or with it off), and the
+// setting an accuracy target chose.
 std::string accuracyCells(const v1::Frame& frame) {
-  if (!frame.has_accuracy()) return ",,,,,,";
+  const std::string setting = frame.has_accuracy_control() ? frame.accuracy_control().setting() : "";
+  if (!frame.has_accuracy()) return ",,,,,,," + setting;
   const v1::AccuracyEstimate& a = frame.accuracy();
   char cells[160];
-  std::snprintf(cells, sizeof cells, "%llu,%u,%.5f,%.5f,%.5f,%.5f,%.5f", static_cast<unsigned long long>(a.frame()),
+  std::snprintf(cells, sizeof cells, "%llu,%u,%.5f,%.5f,%.5f,%.5f,%.5f,", static_cast<unsigned long long>(a.frame()),
                 a.sampled(), a.mismatch(), a.low(), a.high(), a.window_mismatch(), a.window_high());
-  return cells;
+  return cells + setting;
 }
 
 std::string csvRow(std::size_t sample, double pathTime, const v1::Frame& frame, double latencyMs) {
@@ -116,6 +118,7 @@ int main(int argc, char** argv) {
   csv << "sample,path_time_s,input_sequence,frame,latency_ms,render_ms,encode_ms,server_ms,bytes,still,width,height,"
          "scene_time_ms,mirrors,searched,mean_steps,unsolved,tess_input,tess_finished,midpoint_searches,"
          "accuracy_frame,accuracy_sampled,accuracy_mismatch,accuracy_low,accuracy_high,window_mismatch,window_high,"
+         "accuracy_setting,"
          "stages\n";
 
   v1::Hello hello;

@@ -10,6 +10,8 @@ namespace {
 
 // The weight of a new frame in a rung's moving average cost.
 constexpr double kCostWeight = 0.2;
+// A setting counts as cheaper than another below this share of its cost (costs are noisy).
+constexpr double kCheaperShare = 0.9;
 
 }  // namespace
 
@@ -81,6 +83,13 @@ bool AccuracyController::windowMeasured(const reference::ShareEstimate& window, 
     return false;
   }
   met_ = true;
+  // An exact setting measured clearly cheaper than this one meets the target for less.
+  const double currentCost = states_[rung_].costMs;
+  for (std::size_t r = rung_ + 1; r < ladder_.size(); ++r)
+    if (ladder_[r].exact && states_[r].costMs > 0.0 && states_[r].costMs < kCheaperShare * currentCost) {
+      moveTo(r, ladder_[r].name + " is exact and was measured cheaper than " + ladder_[rung_].name);
+      return true;
+    }
   if (windowFrames < kSettleFrames) return false;
   if (window.high >= target_ / 2.0) {
     reason_ = ladder_[rung_].name + ": estimated " + percent(window.share()) + " (95 % ≤ " + percent(window.high) +
@@ -88,7 +97,6 @@ bool AccuracyController::windowMeasured(const reference::ShareEstimate& window, 
     return false;
   }
   // Comfortably under: the cheapest less accurate rung out of its cool-down and not known to cost more.
-  const double currentCost = states_[rung_].costMs;
   std::optional<std::size_t> cheaper;
   for (std::size_t r = 0; r < rung_; ++r) {
     const RungState& state = states_[r];

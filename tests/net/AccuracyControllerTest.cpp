@@ -87,6 +87,11 @@ TEST(AccuracyController, ACheaperSettingMeasuredDearerIsNotChosen) {
   ASSERT_TRUE(controller.windowMeasured(window(0.0), 8, 8));
   EXPECT_EQ(controller.rung(), rungNamed(controller, ladder, "virtual objects without tessellation"));
   EXPECT_FALSE(controller.windowMeasured(reference::ShareEstimate{}, 0, 9)) << "no mirror sampled: nothing learnt";
+  // Searching turns out dearer than casting every mirror, which is exact: back to casting.
+  controller.frameRendered(controller.rung(), 20.0);
+  ASSERT_TRUE(controller.windowMeasured(window(0.001, 1), 1, 10));
+  EXPECT_EQ(controller.rung(), exact);
+  EXPECT_NE(controller.reason().find("exact and was measured cheaper"), std::string::npos) << controller.reason();
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "app/GlSetup.h"
 #include "app/SceneSource.h"
 #include "app/ReflectionOptions.h"
+#include "bench/ImageComparison.h"
 #include "encode/JpegEncoder.h"
 #include "encode/PngEncoder.h"
 #include "reference/RayTracer.h"
@@ -43,6 +44,10 @@ CommandLine renderOptions() {
   for (OptionSpec& spec : reflectionOptions()) specs.push_back(std::move(spec));
   specs.push_back(samplesOption(math::kStillFrameSamples));
   specs.push_back({"out", "FILE", "output image; .png (lossless) or .jpg", "<scene>.png"});
+  specs.push_back({"verify", "",
+                   "also ray-trace the exact image (CPU) and print how far the frame is from it: PSNR, SSIM, the "
+                   "share of mirror pixels wrong, and the live estimate a stream would have shown",
+                   ""});
   specs.push_back(glOption());
   return CommandLine(
       "specula render [options]",
@@ -199,6 +204,35 @@ std::string describeFrame(const scene::Scene& scene, const render::RenderedFrame
   return text;
 }
 
+// `frame` against the ray tracer's image of the same pose, size and samples: the full comparison, and
+// beside it what the live estimate of a stream would have said of this frame.
+Result<std::string> verifyAgainstRayTracer(const std::shared_ptr<const scene::Scene>& scene,
+                                           const scene::ScenePose& pose, const render::RenderedFrame& frame) {
+  auto tracer = reference::RayTracer::create(scene);
+  if (!tracer) return Error{tracer.error()};
+  reference::RayTracerOptions traced;
+  traced.width = frame.width;
+  traced.height = frame.height;
+  traced.samples = frame.samples;
+  auto truth = (*tracer)->render(pose, traced);
+  if (!truth) return Error{"--verify: " + truth.error()};
+  auto comparison = bench::compareWithReference(frame, *truth);
+  if (!comparison) return Error{"--verify: " + comparison.error()};
+  auto posed = (*tracer)->posedScene(pose);
+  if (!posed) return Error{"--verify: " + posed.error()};
+  auto live = bench::sampleAgainstReference(**tracer, std::move(*posed), pose.camera, frame, 0);
+  if (!live) return Error{"--verify: " + live.error()};
+  const reference::ShareEstimate& e = live->sample.mismatch;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "verify: against the ray tracer (%d rays a pixel, %s ms): PSNR %.2f dB, SSIM %.4f, mirror pixels "
+                "wrong %.3f %%; the live estimate from %zu of them: %.3f %% (95 %%: %.3f to %.3f %%), %s ms\n",
+                frame.samples, formatMilliseconds(truth->milliseconds).c_str(), comparison->psnr, comparison->ssim,
+                100.0 * comparison->mirrorMismatch, e.sampled, 100.0 * e.share(), 100.0 * e.low, 100.0 * e.high,
+                formatMilliseconds(live->milliseconds).c_str());
+  return std::string(text);
+}
+
 }  // namespace
 
 int runRender(std::span<const std::string> arguments) {
@@ -267,8 +301,13 @@ int runRender(std::span<const std::string> arguments) {
     auto patches = (*renderer)->measurePatchTessellation(pose, *frame);
     if (!patches) return fail(patches.error());
     if (patches->patches > 0) parametric = describePatchTessellation(*patches);
-    rgba = std::move(frame->rgba);
     timings = describeFrame(**scene, *frame, *settings);
+    if (options.has("verify")) {
+      auto verified = verifyAgainstRayTracer(*scene, pose, *frame);
+      if (!verified) return fail(verified.error());
+      timings += *verified;
+    }
+    rgba = std::move(frame->rgba);
   }
 
   const encode::ImageView view{rgba.data(), size->first, size->second};

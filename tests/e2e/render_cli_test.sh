@@ -11,6 +11,13 @@ check "render writes a PNG" "$specula" render --scene checker-sphere --size 160x
 check "the PNG has a PNG signature" is_png "$work/f.png"
 check "render writes a JPEG" "$specula" render --scene checker-sphere --size 160x120 --out "$work/f.jpg" --gl osmesa
 check "the JPEG has a JPEG signature" is_jpeg "$work/f.jpg"
+output=$("$specula" render --scene checker-sphere --size 160x120 --method environment-map --verify --out "$work/v.png" 2>&1)
+check "render --verify compares the frame with the ray tracer and states the live estimate beside it" \
+  bash -c "grep -qE '^verify: against the ray tracer \(4 rays a pixel, .* ms\): PSNR [0-9.]+ dB, SSIM [0-9.]+, mirror pixels wrong [0-9.]+ %; the live estimate from [0-9]+ of them: [0-9.]+ % \(95 %: [0-9.]+ to [0-9.]+ %\)' <<<\"\$0\"" "$output"
+check "... whose interval holds the full comparison's share" awk -v line="$(grep '^verify:' <<<"$output")" 'BEGIN {
+  match(line, /wrong [0-9.]+ %/); full = substr(line, RSTART + 6, RLENGTH - 8) + 0
+  match(line, /95 %: [0-9.]+ to [0-9.]+ %/); split(substr(line, RSTART + 6, RLENGTH - 8), b, " to ")
+  exit !(full > 5 && b[1] + 0 <= full && full <= b[2] + 0) }'
 output=$("$specula" render --scene checker-sphere --size 64x48 --time 2 --eye 0,4,6 --target 0,0,0 --out "$work/g.png" 2>&1)
 check "render prints per-stage timings, anti-aliased by default" grep -q "frame 64x48, 4 samples a pixel, pass times summed over them: scene .* ms, anti-aliasing .* ms, readback .* ms, total .* ms" <<<"$output"
 check "render logs the GL platform and renderer" grep -q "specula: GL platform egl-surfaceless" <<<"$output"

@@ -11,6 +11,9 @@ check "serve --help lists every option" bash -c "for o in bind port scene max-se
 check "specula --help lists serve" bash -c "'$specula' --help | grep -q '^  serve'"
 fails_with "a bad port names the option" "--port expects an integer in [0, 65535]" serve --port 70000
 fails_with "a bad session limit names the option" "--max-sessions expects an integer" serve --max-sessions 0
+fails_with "an accuracy sample count out of range names the option" "--accuracy-samples" serve --accuracy-samples 70000
+fails_with "an accuracy target out of range names the option" "--accuracy-target" serve --accuracy-target 101
+fails_with "an accuracy target without the estimate is refused" "--accuracy-target needs the live estimate" serve --accuracy-target 1 --accuracy-samples 0
 fails_with "an unknown scene fails before listening" "neither a built-in scene" serve --scene nope --port 0
 fails_with "a non-loopback bind needs a token" "without a token" serve --bind 0.0.0.0 --port 0
 fails_with "a bad bind address is named" "is not an IP address" serve --bind not-an-ip --token t --port 0

@@ -284,12 +284,14 @@ TEST(ReflectionSearch, CheckerSphereFrameAgreesWithTheRayTracedReference) {
   const reference::RgbaView ours{frame->rgba, 320, 240}, theirs{truth->rgba, 320, 240};
   auto mismatch = reference::maskedMismatch(ours, theirs, truth->mirrorMask);
   ASSERT_TRUE(mismatch);
-  // Measured 0.11 / 19.1 dB / 0.94: the rest is the coarse floor's straight virtual edges, which
-  // adaptive tessellation (issue #4) removes.
+  std::printf("checker-sphere searched: mirror mismatch %.5f, PSNR %.2f dB, SSIM %.4f\n", mismatch->share(),
+              *reference::psnr(ours, theirs), *reference::ssim(ours, theirs));
+  // Measured on llvmpipe with the default adaptive tessellation: 0.0036 / 39.0 dB / 0.9977 (the rest are
+  // pixels on the reflected checker edges, where a virtual triangle's straight edge and the exact curve part).
   EXPECT_GT(mismatch->inside, 10000u);
-  EXPECT_LE(mismatch->share(), 0.14);
-  EXPECT_GE(*reference::psnr(ours, theirs), 18.0);
-  EXPECT_GE(*reference::ssim(ours, theirs), 0.93);
+  EXPECT_LE(mismatch->share(), 0.006);
+  EXPECT_GE(*reference::psnr(ours, theirs), 37.0);
+  EXPECT_GE(*reference::ssim(ours, theirs), 0.995);
   // Outside the mirror the two renderers agree to the byte (±1 for sRGB rounding), except where a
   // checker edge runs through a pixel's centre: there a last-bit difference in the floor's position
   // picks the other square (seen once at 320x240 on an H200; never on llvmpipe). Such a pixel has

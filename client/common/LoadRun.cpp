@@ -108,7 +108,8 @@ SessionLoad runSession(const LoadOptions& options, int index, Clock::time_point 
     renderSum += frame.render_ms();
     encodeSum += frame.encode_ms();
     serverSum += frame.server_ms();
-    if (frame.has_accuracy() && frame.accuracy().frame() != lastEstimated) {
+    // An estimate that found no mirror pixel in view claims nothing ([0, 1]): left out.
+    if (frame.has_accuracy() && frame.accuracy().frame() != lastEstimated && frame.accuracy().sampled() > 0) {
       const v1::AccuracyEstimate& accuracy = frame.accuracy();
       lastEstimated = accuracy.frame();
       ++result.estimatedFrames;

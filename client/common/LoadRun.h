@@ -41,7 +41,8 @@ struct SessionLoad {
   int resumesRefused = 0;     // of those, the ones the server could not resume
   int resumed = 0;            // welcomes that brought the session back from its resume token
   double longestGapMs = 0.0;  // between two frames while measuring: what a lost connection cost
-  // The live accuracy estimates received while measuring, each counted once (Frame.accuracy).
+  // The live accuracy estimates received while measuring that sampled mirror pixels, each counted once
+  // (Frame.accuracy).
   std::uint64_t estimatedFrames = 0;
   double mismatchMean = 0.0, worstMismatchHigh = 0.0, accuracyMsMean = 0.0;
   std::string error;  // empty when the session ran to the end
@@ -55,7 +56,8 @@ struct LoadReport {
   double fpsMean = 0.0, fpsMin = 0.0;                           // per session
   double latencyP50 = 0.0, latencyP99 = 0.0, latencyMax = 0.0;  // ms, all sessions together
   double renderMsMean = 0.0, encodeMsMean = 0.0, bytesPerFrame = 0.0;
-  // Live accuracy estimates, all sessions: how many, their mean mismatch, the highest upper bound, CPU ms.
+  // Live accuracy estimates that sampled mirror pixels, all sessions: how many, their mean mismatch, the
+  // highest upper bound, CPU ms.
   std::uint64_t estimatedFrames = 0;
   double mismatchMean = 0.0, worstMismatchHigh = 0.0, accuracyMsMean = 0.0;
 };

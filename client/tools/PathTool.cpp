@@ -172,7 +172,8 @@ int main(int argc, char** argv) {
       csv << csvRow(currentSample, currentPathTime, frame, latency);
       if (frame.has_accuracy()) {
         lastAccuracy = frame.accuracy();
-        worstFrameHigh = std::max(worstFrameHigh, frame.accuracy().high());
+        // A frame with no mirror pixel sampled claims nothing ([0, 1]).
+        if (frame.accuracy().sampled() > 0) worstFrameHigh = std::max(worstFrameHigh, frame.accuracy().high());
       }
       if (!framesDir.empty()) {
         char name[32];

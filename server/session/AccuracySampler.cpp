@@ -1,6 +1,9 @@
 #include "session/AccuracySampler.h"
 
-#include <chrono>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <ctime>
 
 #include "reference/PixelTracer.h"
 #include "reference/RayTracer.h"
@@ -8,6 +11,15 @@
 namespace specula::session {
 
 namespace {
+
+constexpr int kWorkerNice = 19;  // the lowest priority
+
+// CPU time this thread has used: the estimate's cost, which waiting behind the renderer does not inflate.
+double threadCpuMilliseconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
+}
 
 // Whether two poses place and shape every object alike (the camera may differ).
 bool sameGeometry(const scene::ScenePose& a, const scene::ScenePose& b) {
@@ -53,6 +65,9 @@ void AccuracySampler::forget(const void* owner) {
 }
 
 void AccuracySampler::work() {
+  // Estimating runs beside rendering, never in its way: on a machine whose cores the renderer keeps busy
+  // (software GL), this thread gets what is left. (Linux: a thread's own nice value.)
+  setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kWorkerNice);
   while (true) {
     Pending next;
     {
@@ -68,7 +83,7 @@ void AccuracySampler::work() {
 }
 
 Result<FrameAccuracy> AccuracySampler::estimate(const AccuracyJob& job) {
-  const auto start = std::chrono::steady_clock::now();
+  const double start = threadCpuMilliseconds();
   if (!posed_ || !sameGeometry(posedFor_, job.pose)) {
     posed_.reset();
     auto posed = tracer_->posedScene(job.pose);
@@ -84,8 +99,7 @@ Result<FrameAccuracy> AccuracySampler::estimate(const AccuracyJob& job) {
   options.seed = job.frame;
   auto sample = reference::sampleMirrorMismatch(**tracer, {output.rgba, output.width, output.height}, options);
   if (!sample) return Error{sample.error()};
-  return FrameAccuracy{job.frame, *sample,
-                       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count()};
+  return FrameAccuracy{job.frame, *sample, threadCpuMilliseconds() - start};
 }
 
 void AccuracyWindow::add(const FrameAccuracy& frame) {

@@ -1,7 +1,8 @@
 #pragma once
 // The live accuracy estimate of streamed frames: a worker thread traces a sample of each frame's
-// mirror pixels with the reference ray tracer (reference::sampleMirrorMismatch) beside rendering, so
-// estimating never delays a frame; a frame's estimate arrives with a later one.
+// mirror pixels with the reference ray tracer (reference::sampleMirrorMismatch) beside rendering, at the
+// lowest CPU priority, so estimating never delays a frame; a frame's estimate arrives with a later one,
+// and on a machine the renderer keeps busy fewer frames are estimated.
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -34,7 +35,7 @@ struct AccuracyJob {
 struct FrameAccuracy {
   std::uint64_t frame = 0;
   reference::MismatchSample sample;
-  double milliseconds = 0.0;  // the worker's time on it
+  double milliseconds = 0.0;  // the worker thread's CPU time on it
 };
 
 class AccuracySampler {

@@ -10,8 +10,9 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// Asks for frames with camera updates until one carries an estimate (or `tries` frames came without).
-std::optional<v1::Frame> frameWithEstimate(client::SpeculaClient& client, std::uint64_t& sequence, int tries = 40) {
+// Asks for frames with camera updates until one carries an estimate (or `tries` frames came without). The
+// sampler runs at the lowest CPU priority: beside other tests on a busy machine its estimates come late.
+std::optional<v1::Frame> frameWithEstimate(client::SpeculaClient& client, std::uint64_t& sequence, int tries = 400) {
   for (int i = 0; i < tries; ++i) {
     EXPECT_TRUE(client.send(cameraMessage({0.2f * static_cast<float>(i % 3), 1.0f, 6.0f}, ++sequence)).ok());
     auto frame = receiveUntil(client, isFrame);
@@ -60,7 +61,7 @@ TEST(LiveAccuracy, AStillViewGetsTheEstimateOfTheFrameOnScreenWithoutNewInput) {
   ASSERT_TRUE(client->send(animationMessage(v1::AnimationControl::PAUSE)).ok());
   std::uint64_t lastRendered = 0;
   std::optional<v1::AccuracyEstimate> own;
-  const auto deadline = std::chrono::steady_clock::now() + 5s;
+  const auto deadline = std::chrono::steady_clock::now() + 20s;
   while (!own && std::chrono::steady_clock::now() < deadline) {
     auto message = client->receive(200ms);
     if (!message) continue;
@@ -111,7 +112,8 @@ TEST(LiveAccuracy, ATargetNoSettingMeetsEndsOnTheMostAccurateAndSaysSo) {
   ASSERT_TRUE(client->sendRaw(R"({"settings":{"accuracyTarget":0.5}})", true).ok());
   std::uint64_t sequence = 0;
   std::optional<v1::Frame> reported;
-  for (int i = 0; i < 20 && !(reported && reported->has_accuracy_control() && !reported->accuracy_control().met()); ++i)
+  for (int i = 0; i < 200 && !(reported && reported->has_accuracy_control() && !reported->accuracy_control().met());
+       ++i)
     reported = frameWithEstimate(*client, sequence);
   ASSERT_TRUE(reported && reported->has_accuracy_control());
   const v1::AccuracyControl& control = reported->accuracy_control();

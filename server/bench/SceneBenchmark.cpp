@@ -72,6 +72,7 @@ Result<SceneBenchResult::ReferenceComparison> compareWithRayTracer(std::shared_p
   if (!truth) return Error{truth.error()};
   auto comparison = bench::compareWithReference(*still, *truth);
   if (!comparison) return Error{comparison.error()};
+  // The ray-trace times above include building the hierarchy, as a reference image's do; the estimate builds its own.
   auto posed = (*tracer)->posedScene(pose);
   if (!posed) return Error{posed.error()};
   auto estimate = sampleAgainstReference(**tracer, std::move(*posed), pose.camera, *still, 0);

@@ -76,7 +76,15 @@ Result<ReferenceImage> RayTracer::render(const scene::ScenePose& pose, const Ray
   const Clock::time_point start = Clock::now();
   auto posed = posedScene(pose);
   if (!posed) return Error{"RayTracer::render(): " + posed.error()};
-  auto tracer = pixelTracer(std::move(*posed), pose.camera, options);
+  auto image = render(std::move(*posed), pose.camera, options);
+  if (image) image->milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return image;
+}
+
+Result<ReferenceImage> RayTracer::render(std::shared_ptr<const PosedScene> posed, const math::Camera& camera,
+                                         const RayTracerOptions& options) const {
+  const Clock::time_point start = Clock::now();
+  auto tracer = pixelTracer(std::move(posed), camera, options);
   if (!tracer) return Error{"RayTracer::render(): " + tracer.error()};
 
   ReferenceImage image;

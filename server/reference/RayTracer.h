@@ -60,6 +60,9 @@ class RayTracer {
   // Renders the scene at `pose` (which must come from this scene). Fails on a camera that cannot
   // produce a view, a non-positive size or bounce count, or an Embree error. Safe to call concurrently.
   Result<ReferenceImage> render(const scene::ScenePose& pose, const RayTracerOptions& options) const;
+  // The same from a pose's geometry built already (posedScene), seen by `camera`.
+  Result<ReferenceImage> render(std::shared_ptr<const PosedScene> posed, const math::Camera& camera,
+                                const RayTracerOptions& options) const;
 
   // The pose's geometry (objects placed, deformed), which every camera of that pose can share.
   Result<std::shared_ptr<const PosedScene>> posedScene(const scene::ScenePose& pose) const;
